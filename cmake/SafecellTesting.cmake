@@ -1,0 +1,26 @@
+# GoogleTest for the tests, and safecell_add_test().
+#
+# Native builds use the system's GoogleTest. Cross builds compile it from Debian's source package
+# (/usr/src/googletest) with the cross compiler, so no target-architecture packages are needed.
+if(CMAKE_CROSSCOMPILING)
+  set(SAFECELL_GOOGLETEST_SOURCE /usr/src/googletest/googletest CACHE PATH "GoogleTest sources")
+  if(NOT EXISTS ${SAFECELL_GOOGLETEST_SOURCE}/CMakeLists.txt)
+    message(FATAL_ERROR "GoogleTest sources not found at ${SAFECELL_GOOGLETEST_SOURCE}; "
+                        "install Debian's googletest package (bash .ci/install-deps --cross)")
+  endif()
+  set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)
+  add_subdirectory(${SAFECELL_GOOGLETEST_SOURCE} ${CMAKE_BINARY_DIR}/googletest SYSTEM EXCLUDE_FROM_ALL)
+  add_library(GTest::gtest ALIAS gtest)
+else()
+  find_package(GTest REQUIRED)
+endif()
+
+# safecell_add_test(<name> SOURCES ... LIBRARIES ...)
+# One test executable per module, run by ctest (through the emulator when cross-compiling).
+function(safecell_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  add_executable(test_${name} ${ARG_SOURCES})
+  target_link_libraries(test_${name} PRIVATE ${ARG_LIBRARIES} safecell::test_support GTest::gtest
+                                             safecell::warnings)
+  add_test(NAME ${name} COMMAND test_${name})
+endfunction()

@@ -1,0 +1,20 @@
+#pragma once
+// Reading a cell description from YAML. Unknown fields are refused (a misspelt field would
+// otherwise be silently ignored), and so are missing fields and values of the wrong type.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "safecell/cell/cell_config.hpp"
+
+namespace safecell {
+
+// Throws CellError for malformed YAML and for missing, unknown or mistyped fields. Values are
+// checked for sense (ranges, m_max, lever arms) when the grid is built: see make_grid().
+CellConfig parse_cell_yaml(std::string_view text, const std::string& source);
+
+// As parse_cell_yaml(), reading the file first; a file that cannot be read is a CellError too.
+CellConfig load_cell_file(const std::filesystem::path& path);
+
+}  // namespace safecell

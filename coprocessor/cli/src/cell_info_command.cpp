@@ -1,0 +1,88 @@
+#include "safecell/cli/cell_info_command.hpp"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "safecell/base/freestanding_math.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/cell/default_cell.hpp"
+#include "safecell/cli/text_table.hpp"
+
+namespace safecell {
+namespace {
+
+double degrees(double radians) { return radians * 180.0 / kPi; }
+
+std::string hex64(std::uint64_t value) {
+  char text[19];
+  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+nlohmann::ordered_json to_json(const CellConfig& cell, const CspaceGrid& grid) {
+  nlohmann::ordered_json joints = nlohmann::ordered_json::array();
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const JointSpec& spec = grid.joint(j);
+    nlohmann::ordered_json joint;
+    joint["name"] = cell.joints[j].name;
+    joint["range_rad"] = {spec.lo_rad, spec.hi_rad};
+    joint["l_m"] = spec.l_m;
+    joint["discretised"] = spec.discretised;
+    joint["dq_rad"] = spec.discretised ? nlohmann::ordered_json(grid.max_move_step_rad(j))
+                                       : nlohmann::ordered_json(nullptr);
+    joint["cell_width_rad"] = grid.cell_width_rad(j);
+    joint["cells"] = grid.cells_along(j);
+    joint["stride"] = grid.stride(j);
+    joints.push_back(std::move(joint));
+  }
+  nlohmann::ordered_json report;
+  report["cell"] = cell.name;
+  report["source"] = cell.source;
+  report["m_max_m"] = grid.m_max_m();
+  report["joints"] = std::move(joints);
+  report["cells"] = grid.cell_count();
+  // A string: JSON numbers lose precision above 2^53.
+  report["fingerprint"] = hex64(grid.fingerprint());
+  return report;
+}
+
+void print_text(const CellConfig& cell, const CspaceGrid& grid, std::ostream& out) {
+  out << cell.name << "  (" << cell.source << ")\n"
+      << "max-move m_max = " << fixed(grid.m_max_m(), 3) << " m\n\n";
+  using Align = TextTable::Align;
+  TextTable table({{"joint", Align::kLeft},
+                   {"range [deg]", Align::kRight},
+                   {"l [m]", Align::kRight},
+                   {"dq [deg]", Align::kRight},
+                   {"width [deg]", Align::kRight},
+                   {"cells", Align::kRight}});
+  std::string product;
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const JointSpec& spec = grid.joint(j);
+    const bool swept = !spec.discretised;
+    table.add_row({cell.joints[j].name,
+                   fixed(degrees(spec.lo_rad), 1) + " .. " + fixed(degrees(spec.hi_rad), 1),
+                   fixed(spec.l_m, 3), swept ? "swept" : fixed(degrees(grid.max_move_step_rad(j)), 2),
+                   fixed(degrees(grid.cell_width_rad(j)), 2), std::to_string(grid.cells_along(j))});
+    if (!swept) product += (product.empty() ? "" : " x ") + std::to_string(grid.cells_along(j));
+  }
+  table.print(out);
+  out << "\nC-space cells: " << grouped(grid.cell_count()) << "  (" << product << ")\n"
+      << "fingerprint:   " << hex64(grid.fingerprint()) << '\n';
+}
+
+}  // namespace
+
+void run_cell_info(const CellInfoOptions& options, std::ostream& out) {
+  const CellConfig cell =
+      options.cell_path.empty() ? default_cell() : load_cell_file(options.cell_path);
+  const CspaceGrid grid = make_grid(cell);
+  if (options.json) {
+    out << to_json(cell, grid).dump(2) << '\n';
+  } else {
+    print_text(cell, grid, out);
+  }
+}
+
+}  // namespace safecell

@@ -1,0 +1,120 @@
+#include "safecell/cell/cell_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "safecell/cell/cell_error.hpp"
+#include "safecell/cell/default_cell.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr const char* kTwoJoints = R"(name: two joints
+m_max_m: 0.2
+joints:
+  - name: a
+    range_deg: [-90, 90]
+    l_m: 1.0
+  - name: b
+    range_deg: [0, 45.5]
+    l_m: 0.5
+    discretised: false
+)";
+
+// The message of the CellError that parsing `text` raises.
+std::string error_of(const std::string& text) {
+  try {
+    static_cast<void>(parse_cell_yaml(text, "bad.yaml"));
+  } catch (const CellError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+TEST(CellFile, ReadsEveryField) {
+  const CellConfig cell = parse_cell_yaml(kTwoJoints, "two.yaml");
+  EXPECT_EQ(cell.name, "two joints");
+  EXPECT_EQ(cell.source, "two.yaml");
+  EXPECT_EQ(cell.m_max_m, 0.2);
+  ASSERT_EQ(cell.joints.size(), 2u);
+  EXPECT_EQ(cell.joints[0].name, "a");
+  EXPECT_EQ(cell.joints[0].lo_deg, -90.0);
+  EXPECT_EQ(cell.joints[0].hi_deg, 90.0);
+  EXPECT_EQ(cell.joints[0].l_m, 1.0);
+  EXPECT_TRUE(cell.joints[0].discretised);
+  EXPECT_EQ(cell.joints[1].hi_deg, 45.5);
+  EXPECT_FALSE(cell.joints[1].discretised);
+  EXPECT_EQ(cell.joints[1].l_at.line, 9);
+}
+
+TEST(CellFile, TheDefaultCellIsTheShippedYaml) {
+  const CellConfig cell = default_cell();
+  EXPECT_EQ(cell.source, kDefaultCellSource);
+  EXPECT_EQ(cell.m_max_m, 0.18);
+  ASSERT_EQ(cell.joints.size(), 6u);
+  EXPECT_TRUE(cell.joints[3].discretised);
+  EXPECT_FALSE(cell.joints[4].discretised);
+  EXPECT_NE(default_cell_yaml().find("RX130"), std::string_view::npos);
+}
+
+TEST(CellFile, MissingFieldIsNamed) {
+  std::string text = kTwoJoints;
+  text.replace(text.find("m_max_m: 0.2\n"), 13, "");
+  EXPECT_EQ(error_of(text), "bad.yaml:1: m_max_m: missing (required)");
+  text = kTwoJoints;
+  text.replace(text.find("    l_m: 0.5\n"), 13, "");
+  EXPECT_EQ(error_of(text), "bad.yaml:7: joints[1].l_m: missing (required)");
+}
+
+TEST(CellFile, UnknownFieldIsNamedWithTheExpectedOnes) {
+  std::string text = kTwoJoints;
+  text.replace(text.find("l_m: 1.0"), 8, "lm: 1.0");
+  EXPECT_EQ(error_of(text),
+            "bad.yaml:6: joints[0].lm: unknown field (expected one of: name, range_deg, l_m, "
+            "discretised)");
+}
+
+TEST(CellFile, WrongTypesAreNamedWithTheValue) {
+  std::string text = kTwoJoints;
+  text.replace(text.find("0.2"), 3, "fast");
+  EXPECT_EQ(error_of(text), "bad.yaml:2: m_max_m: expected a number, got 'fast'");
+  text = kTwoJoints;
+  text.replace(text.find("[-90, 90]"), 9, "[-90]");
+  EXPECT_EQ(error_of(text),
+            "bad.yaml:5: joints[0].range_deg: expected [lower, upper] in degrees, got a list");
+  text = kTwoJoints;
+  text.replace(text.find("false"), 5, "maybe");
+  EXPECT_EQ(error_of(text), "bad.yaml:10: joints[1].discretised: expected true or false, got 'maybe'");
+  EXPECT_EQ(error_of("- just\n- a list\n"),
+            "bad.yaml:1: (file): expected a mapping of cell fields, got a list");
+}
+
+TEST(CellFile, MalformedYamlNamesTheLine) {
+  const std::string message = error_of("name: x\nm_max_m: [0.2\njoints: []\n");
+  EXPECT_EQ(message.rfind("bad.yaml:", 0), 0u) << message;
+  EXPECT_NE(message.find("not valid YAML"), std::string::npos) << message;
+}
+
+TEST(CellFile, UnreadableFilesAreNamed) {
+  const auto missing = std::filesystem::temp_directory_path() / "safecell-no-such-cell.yaml";
+  try {
+    static_cast<void>(load_cell_file(missing));
+    FAIL() << "no error";
+  } catch (const CellError& error) {
+    EXPECT_EQ(std::string(error.what()), missing.string() + ": (file): cannot be opened for reading");
+  }
+  EXPECT_THROW(static_cast<void>(load_cell_file(std::filesystem::temp_directory_path())), CellError);
+}
+
+TEST(CellFile, LoadsFromDisk) {
+  const auto path = std::filesystem::temp_directory_path() / "safecell-cell-file-test.yaml";
+  std::ofstream(path) << kTwoJoints;
+  EXPECT_EQ(load_cell_file(path).joints.size(), 2u);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace safecell

@@ -1,0 +1,81 @@
+#include "safecell/cell/cell_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "safecell/cell/cell_error.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/default_cell.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr const char* kCell = R"(name: test cell
+m_max_m: 0.18
+joints:
+  - name: a
+    range_deg: [-90, 90]
+    l_m: 1.0
+  - name: b
+    range_deg: [-45, 45]
+    l_m: 0.5
+)";
+
+std::string grid_error_of(std::string text) {
+  try {
+    static_cast<void>(make_grid(parse_cell_yaml(text, "cell.yaml")));
+  } catch (const CellError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
+
+TEST(CellGrid, DefaultCellHasThePapersSize) {
+  const CspaceGrid grid = make_grid(default_cell());
+  // The paper: 181,400 cells for its RX130 at m_max = 18 cm.
+  EXPECT_GE(grid.cell_count(), 150000u);
+  EXPECT_LE(grid.cell_count(), 200000u);
+  EXPECT_EQ(grid.joint_count(), 6u);
+}
+
+TEST(CellGrid, ConvertsDegreesToRadians) {
+  const CspaceGrid grid = make_grid(parse_cell_yaml(kCell, "cell.yaml"));
+  EXPECT_NEAR(grid.joint(0).lo_rad, -1.5707963267948966, 1e-15);
+  EXPECT_NEAR(grid.joint(1).hi_rad, 0.7853981633974483, 1e-15);
+}
+
+TEST(CellGrid, AbsurdValuesAreNamedWithFileLineFieldAndValue) {
+  EXPECT_EQ(grid_error_of(replaced(kCell, "0.18", "-0.18")),
+            "cell.yaml:2: m_max_m: value -0.18, expected a distance above 0 m");
+  EXPECT_EQ(grid_error_of(replaced(kCell, "[-45, 45]", "[45, -45]")),
+            "cell.yaml:8: joints[1].range_deg: value [45, -45], expected finite limits with "
+            "lower < upper");
+  EXPECT_EQ(grid_error_of(replaced(kCell, "l_m: 0.5", "l_m: 0.05")),
+            "cell.yaml:9: joints[1].l_m: value 0.05, expected at least m_max_m / 2 = 0.09 m for a "
+            "discretised joint");
+  EXPECT_EQ(grid_error_of(replaced(kCell, "0.18", ".nan")),
+            "cell.yaml:2: m_max_m: value nan, expected a distance above 0 m");
+}
+
+TEST(CellGrid, MoreThanEightJointsAreRefused) {
+  std::string text = "name: nine\nm_max_m: 0.18\njoints:\n";
+  for (int j = 0; j < 9; ++j) {
+    text += "  - {name: j" + std::to_string(j) + ", range_deg: [-10, 10], l_m: 0.3}\n";
+  }
+  EXPECT_EQ(grid_error_of(text), "cell.yaml:4: joints: 9 joints given, expected 1 to 8");
+  EXPECT_EQ(grid_error_of("name: none\nm_max_m: 0.18\njoints: []\n"),
+            "cell.yaml:3: joints: 0 joints given, expected 1 to 8");
+}
+
+TEST(CellGrid, TooFineAGridIsRefused) {
+  const std::string message = grid_error_of(replaced(kCell, "0.18", "0.0000001"));
+  EXPECT_NE(message.find("more than 2^32 - 1 cells"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace safecell
