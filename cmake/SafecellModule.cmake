@@ -32,4 +32,5 @@ function(safecell_add_freestanding_library name)
     PUBLIC ${ARG_DEPENDS}
     PRIVATE safecell::freestanding safecell::warnings)
   safecell_check_headers_alone(safecell_${name} ${CMAKE_CURRENT_SOURCE_DIR}/include safecell::freestanding)
+  set_property(GLOBAL APPEND PROPERTY SAFECELL_FREESTANDING_LIBRARIES safecell_${name})
 endfunction()

@@ -10,7 +10,7 @@ if(CMAKE_CROSSCOMPILING)
   endif()
   set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)
   add_subdirectory(${SAFECELL_GOOGLETEST_SOURCE} ${CMAKE_BINARY_DIR}/googletest SYSTEM EXCLUDE_FROM_ALL)
-  add_library(GTest::gtest ALIAS gtest)
+  # GoogleTest 1.12 defines the GTest::gtest alias itself.
 else()
   find_package(GTest REQUIRED)
 endif()

@@ -19,7 +19,8 @@ TEST(Assert, CallsTheInstalledHandlerWithTheExpression) {
     static_cast<void>(checked_half(3));
     FAIL() << "no assertion raised";
   } catch (const test::AssertFailure& failure) {
-    EXPECT_NE(std::string(failure.what()).find("even % 2 == 0"), std::string::npos) << failure.what();
+    EXPECT_NE(std::string(failure.what()).find("even % 2 == 0"), std::string::npos)
+        << failure.what();
   }
 }
 

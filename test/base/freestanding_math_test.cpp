@@ -26,7 +26,8 @@ TEST(FreestandingMath, AsinAgreesWithTheHostLibrary) {
   for (int i = 0; i < run.iterations(); ++i) {
     const double value = x(run.rng());
     // Near +-1 asin is ill-conditioned (slope -> infinity); compare relative to that slope.
-    const double tolerance = 4e-16 / std::sqrt(1.0 - value * value) + 1e-15 * std::abs(std::asin(value));
+    const double tolerance =
+        4e-16 / std::sqrt(1.0 - value * value) + 1e-15 * std::abs(std::asin(value));
     ASSERT_NEAR(asin_rad(value), std::asin(value), tolerance) << "x = " << value;
   }
 }

@@ -87,7 +87,8 @@ TEST(CellFile, WrongTypesAreNamedWithTheValue) {
             "bad.yaml:5: joints[0].range_deg: expected [lower, upper] in degrees, got a list");
   text = kTwoJoints;
   text.replace(text.find("false"), 5, "maybe");
-  EXPECT_EQ(error_of(text), "bad.yaml:10: joints[1].discretised: expected true or false, got 'maybe'");
+  EXPECT_EQ(error_of(text),
+            "bad.yaml:10: joints[1].discretised: expected true or false, got 'maybe'");
   EXPECT_EQ(error_of("- just\n- a list\n"),
             "bad.yaml:1: (file): expected a mapping of cell fields, got a list");
 }
@@ -104,9 +105,11 @@ TEST(CellFile, UnreadableFilesAreNamed) {
     static_cast<void>(load_cell_file(missing));
     FAIL() << "no error";
   } catch (const CellError& error) {
-    EXPECT_EQ(std::string(error.what()), missing.string() + ": (file): cannot be opened for reading");
+    EXPECT_EQ(std::string(error.what()),
+              missing.string() + ": (file): cannot be opened for reading");
   }
-  EXPECT_THROW(static_cast<void>(load_cell_file(std::filesystem::temp_directory_path())), CellError);
+  EXPECT_THROW(static_cast<void>(load_cell_file(std::filesystem::temp_directory_path())),
+               CellError);
 }
 
 TEST(CellFile, LoadsFromDisk) {

@@ -48,15 +48,15 @@ TEST(CellInfoCommand, JsonOfTheDefaultCell) {
     product *= joint["cells"].get<std::uint64_t>();
   }
   EXPECT_EQ(product, report["cells"].get<std::uint64_t>());
-  EXPECT_TRUE(report["joints"][4]["dq_rad"].is_null());  // the wrist is swept
+  EXPECT_TRUE(report["joints"][4]["dq_rad"].is_null());             // the wrist is swept
   EXPECT_EQ(report["fingerprint"].get<std::string>().size(), 18u);  // 0x + 16 hex digits
 }
 
 TEST(CellInfoCommand, TextNamesEveryJointAndTheTotal) {
   const CliRun run = safecell_cli({"cell", "info"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const char* expected : {"j1 (base)", "j6 (flange roll)", "swept", "C-space cells:",
-                               "fingerprint:", "m_max = 0.180 m"}) {
+  for (const char* expected : {"j1 (base)", "j6 (flange roll)", "swept",
+                               "C-space cells:", "fingerprint:", "m_max = 0.180 m"}) {
     EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " missing in\n" << run.out;
   }
 }

@@ -103,7 +103,8 @@ TEST(CspaceGrid, FingerprintChangesWithEveryDefiningField) {
     EXPECT_TRUE(differs([j](GridSpec& s) { s.joints[j].l_m += 1e-9; }));
     // Joint 6 (l = 0.06 m < m_max / 2) can only be swept.
     if (j != 5) {
-      EXPECT_TRUE(differs([j](GridSpec& s) { s.joints[j].discretised = !s.joints[j].discretised; }));
+      EXPECT_TRUE(
+          differs([j](GridSpec& s) { s.joints[j].discretised = !s.joints[j].discretised; }));
     }
   }
   // Joints beyond joint_count do not define the grid.
@@ -211,8 +212,10 @@ TEST(CspaceGrid, EveryAngleInRangeLiesInsideTheBoundsOfItsCell) {
     for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
       const auto bounds = grid.cell_bounds(coords.value(), j);
       ASSERT_TRUE(bounds.ok());
-      EXPECT_LE(bounds.value().lo_rad, angles.rad[j] + 1e-12) << "iteration " << i << " joint " << j;
-      EXPECT_GE(bounds.value().hi_rad, angles.rad[j] - 1e-12) << "iteration " << i << " joint " << j;
+      EXPECT_LE(bounds.value().lo_rad, angles.rad[j] + 1e-12)
+          << "iteration " << i << " joint " << j;
+      EXPECT_GE(bounds.value().hi_rad, angles.rad[j] - 1e-12)
+          << "iteration " << i << " joint " << j;
     }
   }
 }

@@ -65,8 +65,8 @@ TEST(SafetyRelation, MinimumLookAheadWorkedExample) {
 TEST(SafetyRelation, MaximumSafeSpeedWorkedExample) {
   // 12 free cells = 1.2 m; 1.2 m / 0.456 s = 2.631579 m/s closing; minus the human's 1.6 m/s
   // leaves 1.031579 m/s for the robot; / l = 1 m -> 1.031579 rad/s.
-  EXPECT_NEAR(max_safe_speed_rad_s(12, kArm, 0.300, example_timing()).value(),
-              1.2 / 0.456 - 1.6, 1e-12);
+  EXPECT_NEAR(max_safe_speed_rad_s(12, kArm, 0.300, example_timing()).value(), 1.2 / 0.456 - 1.6,
+              1e-12);
   // 5 free cells = 0.5 m: 0.5 / 0.456 = 1.096 m/s is below the human's speed: stand still.
   EXPECT_EQ(max_safe_speed_rad_s(5, kArm, 0.300, example_timing()).value(), 0.0);
   EXPECT_EQ(max_safe_speed_rad_s(1, kWrist, 0.100, example_timing()).value(),
@@ -88,7 +88,8 @@ TEST(SafetyRelation, MaximumSpeedAndMinimumLookAheadAreInverses) {
     const double allowed = max_safe_speed_rad_s(cells, cell, motion.stop_time_s, timing).value();
     EXPECT_GE(allowed, motion.speed_rad_s * (1.0 - 1e-12)) << "iteration " << i;
     if (cells > 0) {
-      const double fewer = max_safe_speed_rad_s(cells - 1, cell, motion.stop_time_s, timing).value();
+      const double fewer =
+          max_safe_speed_rad_s(cells - 1, cell, motion.stop_time_s, timing).value();
       EXPECT_LT(fewer, motion.speed_rad_s * (1.0 + 1e-12)) << "iteration " << i;
     }
   }
@@ -132,9 +133,10 @@ TEST(SafetyRelation, InvalidParametersGiveAnErrorValue) {
             Status::kInvalidArgument);
   EXPECT_EQ(min_look_ahead_cells(kArm, JointMotion{1.0, -0.3}, timing).error(),
             Status::kInvalidArgument);
-  EXPECT_EQ(min_look_ahead_cells(JointCellGeometry{1.0, 0.0, 0.18, true}, JointMotion{1.0, 0.3},
-                                 timing).error(),
-            Status::kInvalidArgument);
+  EXPECT_EQ(
+      min_look_ahead_cells(JointCellGeometry{1.0, 0.0, 0.18, true}, JointMotion{1.0, 0.3}, timing)
+          .error(),
+      Status::kInvalidArgument);
   EXPECT_EQ(max_safe_speed_rad_s(3, kArm, inf, timing).error(), Status::kInvalidArgument);
   timing.human_speed_m_s = -1.6;
   EXPECT_EQ(max_safe_speed_rad_s(3, kArm, 0.3, timing).error(), Status::kInvalidArgument);

@@ -118,8 +118,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source) {
   try {
     root = YAML::Load(std::string(text));
   } catch (const YAML::Exception& error) {
-    throw_cell_error(SourceLine{source, error.mark.line >= 0 ? error.mark.line + 1 : 0},
-                     "(file)", "not valid YAML: " + error.msg);
+    throw_cell_error(SourceLine{source, error.mark.line >= 0 ? error.mark.line + 1 : 0}, "(file)",
+                     "not valid YAML: " + error.msg);
   }
   const Field top{root, "", SourceLine{source, 1}};
   if (!root.IsMap()) {
@@ -136,13 +136,14 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source) {
 
   const Field joints = require(top, "joints");
   if (!joints.node.IsSequence()) {
-    throw_cell_error(joints.at, joints.path, "expected a list of joints, got " + shown(joints.node));
+    throw_cell_error(joints.at, joints.path,
+                     "expected a list of joints, got " + shown(joints.node));
   }
   cell.joints_at = joints.at;
   for (std::size_t i = 0; i < joints.node.size(); ++i) {
     const YAML::Node node = joints.node[i];
-    cell.joints.push_back(joint_of(
-        Field{node, "joints[" + std::to_string(i) + "]", line_of(node, source)}));
+    cell.joints.push_back(
+        joint_of(Field{node, "joints[" + std::to_string(i) + "]", line_of(node, source)}));
   }
   return cell;
 }
@@ -150,7 +151,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source) {
 CellConfig load_cell_file(const std::filesystem::path& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
-    throw_cell_error(SourceLine{path.string(), 0}, "(file)", "is a directory, expected a YAML file");
+    throw_cell_error(SourceLine{path.string(), 0}, "(file)",
+                     "is a directory, expected a YAML file");
   }
   std::ifstream file(path, std::ios::binary);
   if (!file) {

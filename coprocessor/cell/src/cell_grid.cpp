@@ -35,12 +35,12 @@ std::string number(double value) {
     }
     case GridField::kLeverArm: {
       const JointConfig& joint = cell.joints.at(joint_index);
-      throw_cell_error(joint.l_at, joint_path + ".l_m",
-                       "value " + number(joint.l_m) +
-                           (joint.discretised ? ", expected at least m_max_m / 2 = " +
-                                                    number(cell.m_max_m / 2.0) +
-                                                    " m for a discretised joint"
-                                              : ", expected a finite distance >= 0 m"));
+      throw_cell_error(
+          joint.l_at, joint_path + ".l_m",
+          "value " + number(joint.l_m) +
+              (joint.discretised ? ", expected at least m_max_m / 2 = " +
+                                       number(cell.m_max_m / 2.0) + " m for a discretised joint"
+                                 : ", expected a finite distance >= 0 m"));
     }
     case GridField::kCellCount:
       throw_cell_error(cell.joints.at(joint_index).l_at, joint_path,

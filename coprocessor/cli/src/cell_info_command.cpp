@@ -63,7 +63,8 @@ void print_text(const CellConfig& cell, const CspaceGrid& grid, std::ostream& ou
     const bool swept = !spec.discretised;
     table.add_row({cell.joints[j].name,
                    fixed(degrees(spec.lo_rad), 1) + " .. " + fixed(degrees(spec.hi_rad), 1),
-                   fixed(spec.l_m, 3), swept ? "swept" : fixed(degrees(grid.max_move_step_rad(j)), 2),
+                   fixed(spec.l_m, 3),
+                   swept ? "swept" : fixed(degrees(grid.max_move_step_rad(j)), 2),
                    fixed(degrees(grid.cell_width_rad(j)), 2), std::to_string(grid.cells_along(j))});
     if (!swept) product += (product.empty() ? "" : " x ") + std::to_string(grid.cells_along(j));
   }

@@ -93,14 +93,16 @@ Result<CriticalJoint> critical_joint(const JointCellGeometry* cells, const Joint
   CriticalJoint critical;
   for (std::uint32_t j = 0; j < joint_count; ++j) {
     const JointMotion& motion = motions[j];
-    if (!is_finite_non_negative(motion.speed_rad_s) || !is_finite_non_negative(motion.stop_time_s)) {
+    if (!is_finite_non_negative(motion.speed_rad_s) ||
+        !is_finite_non_negative(motion.stop_time_s)) {
       return Status::kInvalidArgument;
     }
-    SAFECELL_TRY_ASSIGN(const double distance_m, look_ahead_distance_m(look_ahead_cells[j], cells[j]));
+    SAFECELL_TRY_ASSIGN(const double distance_m,
+                        look_ahead_distance_m(look_ahead_cells[j], cells[j]));
     if (!cells[j].discretised || motion.speed_rad_s == 0.0) continue;
-    SAFECELL_TRY_ASSIGN(const double t_c_s,
-                        time_to_collision_s(distance_m, motion.speed_rad_s * cells[j].l_m,
-                                            timing.human_speed_m_s));
+    SAFECELL_TRY_ASSIGN(
+        const double t_c_s,
+        time_to_collision_s(distance_m, motion.speed_rad_s * cells[j].l_m, timing.human_speed_m_s));
     const double slack_s = t_c_s - (reaction_s + motion.stop_time_s);
     if (critical.joint == kNoCriticalJoint || slack_s < critical.slack_s) {
       critical = CriticalJoint{static_cast<std::uint8_t>(j), t_c_s, slack_s};

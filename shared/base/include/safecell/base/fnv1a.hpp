@@ -9,9 +9,7 @@ namespace safecell {
 
 class Fnv1a64 {
  public:
-  constexpr void add_byte(std::uint8_t byte) noexcept {
-    hash_ = (hash_ ^ byte) * 0x100000001B3ull;
-  }
+  constexpr void add_byte(std::uint8_t byte) noexcept { hash_ = (hash_ ^ byte) * 0x100000001B3ull; }
   constexpr void add_u64(std::uint64_t value) noexcept {
     for (int shift = 0; shift < 64; shift += 8) {
       add_byte(static_cast<std::uint8_t>(value >> shift));

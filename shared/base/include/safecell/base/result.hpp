@@ -15,9 +15,11 @@ class [[nodiscard]] Result {
 
  public:
   // Implicit on purpose: `return value;` and `return Status::kOutOfRange;` both read naturally.
-  Result(const T& value) : has_value_(true) { new (&value_) T(value); }  // NOLINT(google-explicit-constructor)
+  Result(const T& value) : has_value_(true) {
+    new (&value_) T(value);
+  }  // NOLINT(google-explicit-constructor)
   Result(T&& value) : has_value_(true) { new (&value_) T(static_cast<T&&>(value)); }  // NOLINT
-  Result(E error) : has_value_(false), error_(error) {}                                // NOLINT
+  Result(E error) : has_value_(false), error_(error) {}                               // NOLINT
 
   Result(const Result& other) : has_value_(other.has_value_) { copy_from(other); }
   Result& operator=(const Result& other) {
@@ -71,12 +73,12 @@ class [[nodiscard]] Result {
 
 // SAFECELL_TRY(expr): evaluates an expression returning Status; returns it from the enclosing
 // function unless it is kOk.
-#define SAFECELL_TRY(expr)                                   \
-  do {                                                       \
-    const ::safecell::Status safecell_try_status_ = (expr);  \
-    if (safecell_try_status_ != ::safecell::Status::kOk) {   \
-      return safecell_try_status_;                           \
-    }                                                        \
+#define SAFECELL_TRY(expr)                                  \
+  do {                                                      \
+    const ::safecell::Status safecell_try_status_ = (expr); \
+    if (safecell_try_status_ != ::safecell::Status::kOk) {  \
+      return safecell_try_status_;                          \
+    }                                                       \
   } while (false)
 
 #define SAFECELL_CONCAT_INNER(a, b) a##b
@@ -87,7 +89,9 @@ class [[nodiscard]] Result {
 // declaration such as `const auto index`).
 #define SAFECELL_TRY_ASSIGN(lhs, expr) \
   SAFECELL_TRY_ASSIGN_IMPL(SAFECELL_CONCAT(safecell_try_result_, __LINE__), lhs, expr)
+// NOLINTBEGIN(bugprone-macro-parentheses): lhs is a declaration and result a name.
 #define SAFECELL_TRY_ASSIGN_IMPL(result, lhs, expr) \
   auto result = (expr);                             \
   if (!result.ok()) return result.error();          \
   lhs = result.value()
+// NOLINTEND(bugprone-macro-parentheses)

@@ -32,7 +32,7 @@ enum class GridField : std::uint8_t {
   kMaxMove,     // m_max_m not finite and positive
   kRange,       // lo_rad/hi_rad not finite, or lo_rad >= hi_rad (joint set)
   kLeverArm,    // l_m not finite, negative, or (discretised) smaller than m_max_m / 2 (joint set)
-  kCellCount,   // the joint's or the grid's cell count does not fit 32 bits (joint set if per joint)
+  kCellCount,  // the joint's or the grid's cell count does not fit 32 bits (joint set if per joint)
 };
 
 struct GridSpecError {

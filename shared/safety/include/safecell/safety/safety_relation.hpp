@@ -42,7 +42,7 @@ struct JointCellGeometry {
   double l_m = 0.0;             // l_i
   double cell_width_rad = 0.0;  // actual cell width along the joint
   double m_max_m = 0.0;
-  bool discretised = true;      // a swept joint never leaves its cell: no look-ahead needed
+  bool discretised = true;  // a swept joint never leaves its cell: no look-ahead needed
 };
 
 struct JointMotion {
