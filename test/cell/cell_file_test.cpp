@@ -41,11 +41,12 @@ TEST(CellFile, ReadsEveryField) {
   EXPECT_EQ(cell.m_max_m, 0.2);
   ASSERT_EQ(cell.joints.size(), 2u);
   EXPECT_EQ(cell.joints[0].name, "a");
-  EXPECT_EQ(cell.joints[0].lo_deg, -90.0);
-  EXPECT_EQ(cell.joints[0].hi_deg, 90.0);
+  EXPECT_EQ(cell.joints[0].range_deg.value()[0], -90.0);
+  EXPECT_EQ(cell.joints[0].range_deg.value()[1], 90.0);
   EXPECT_EQ(cell.joints[0].l_m, 1.0);
   EXPECT_TRUE(cell.joints[0].discretised);
-  EXPECT_EQ(cell.joints[1].hi_deg, 45.5);
+  EXPECT_EQ(cell.joints[1].range_deg.value()[1], 45.5);
+  EXPECT_FALSE(cell.robot.has_value());
   EXPECT_FALSE(cell.joints[1].discretised);
   EXPECT_EQ(cell.joints[1].l_at.line, 9);
 }
@@ -55,6 +56,8 @@ TEST(CellFile, TheDefaultCellIsTheShippedYaml) {
   EXPECT_EQ(cell.source, kDefaultCellSource);
   EXPECT_EQ(cell.m_max_m, 0.18);
   ASSERT_EQ(cell.joints.size(), 6u);
+  ASSERT_TRUE(cell.robot.has_value());
+  EXPECT_EQ(cell.robot->urdf, "builtin:rx130_class");
   EXPECT_TRUE(cell.joints[3].discretised);
   EXPECT_FALSE(cell.joints[4].discretised);
   EXPECT_NE(default_cell_yaml().find("RX130"), std::string_view::npos);
@@ -65,8 +68,8 @@ TEST(CellFile, MissingFieldIsNamed) {
   text.replace(text.find("m_max_m: 0.2\n"), 13, "");
   EXPECT_EQ(error_of(text), "bad.yaml:1: m_max_m: missing (required)");
   text = kTwoJoints;
-  text.replace(text.find("    l_m: 0.5\n"), 13, "");
-  EXPECT_EQ(error_of(text), "bad.yaml:7: joints[1].l_m: missing (required)");
+  text.replace(text.find("  - name: b\n    range_deg"), 25, "  - range_deg");
+  EXPECT_EQ(error_of(text), "bad.yaml:7: joints[1].name: missing (required)");
 }
 
 TEST(CellFile, UnknownFieldIsNamedWithTheExpectedOnes) {
@@ -110,6 +113,24 @@ TEST(CellFile, UnreadableFilesAreNamed) {
   }
   EXPECT_THROW(static_cast<void>(load_cell_file(std::filesystem::temp_directory_path())),
                CellError);
+}
+
+TEST(CellFile, RobotSectionAndRelativeUrdfPaths) {
+  const CellConfig cell = parse_cell_yaml(
+      "name: r\nm_max_m: 0.18\nrobot:\n  urdf: robots/arm.urdf\n  tool_link: tip\n"
+      "  tool: {frame: flange, point_m: [0, 0, 0.2]}\njoints: []\n",
+      "/cells/r.yaml", "/cells");
+  ASSERT_TRUE(cell.robot.has_value());
+  EXPECT_EQ(cell.robot->urdf, "/cells/robots/arm.urdf");
+  EXPECT_EQ(cell.robot->tool_link, "tip");
+  EXPECT_EQ(cell.robot->tool_frame, "flange");
+  EXPECT_EQ(cell.robot->tool_point_m[2], 0.2);
+  EXPECT_EQ(cell.robot->at.line, 4);
+  EXPECT_EQ(error_of("name: r\nm_max_m: 0.18\nrobot: {urdf: a.urdf, tool: {point_m: [1, 2]}}\n"
+                     "joints: []\n"),
+            "bad.yaml:3: robot.tool.point_m: expected [x, y, z] in metres, got a list");
+  EXPECT_EQ(error_of("name: r\nm_max_m: 0.18\nrobot: {path: a.urdf}\njoints: []\n"),
+            "bad.yaml:3: robot.path: unknown field (expected one of: urdf, tool_link, tool)");
 }
 
 TEST(CellFile, LoadsFromDisk) {

@@ -6,7 +6,7 @@
 
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/cell_file.hpp"
-#include "safecell/cell/default_cell.hpp"
+#include "safecell/cell/cell_model.hpp"
 
 namespace safecell {
 namespace {
@@ -24,7 +24,7 @@ joints:
 
 std::string grid_error_of(std::string text) {
   try {
-    static_cast<void>(make_grid(parse_cell_yaml(text, "cell.yaml")));
+    static_cast<void>(make_grid(load_cell_model(parse_cell_yaml(text, "cell.yaml")).config));
   } catch (const CellError& error) {
     return error.what();
   }
@@ -35,16 +35,8 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(text.find(from), from.size(), to);
 }
 
-TEST(CellGrid, DefaultCellHasThePapersSize) {
-  const CspaceGrid grid = make_grid(default_cell());
-  // The paper: 181,400 cells for its RX130 at m_max = 18 cm.
-  EXPECT_GE(grid.cell_count(), 150000u);
-  EXPECT_LE(grid.cell_count(), 200000u);
-  EXPECT_EQ(grid.joint_count(), 6u);
-}
-
 TEST(CellGrid, ConvertsDegreesToRadians) {
-  const CspaceGrid grid = make_grid(parse_cell_yaml(kCell, "cell.yaml"));
+  const CspaceGrid grid = make_grid(load_cell_model(parse_cell_yaml(kCell, "cell.yaml")).config);
   EXPECT_NEAR(grid.joint(0).lo_rad, -1.5707963267948966, 1e-15);
   EXPECT_NEAR(grid.joint(1).hi_rad, 0.7853981633974483, 1e-15);
 }

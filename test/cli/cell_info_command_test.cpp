@@ -55,8 +55,8 @@ TEST(CellInfoCommand, JsonOfTheDefaultCell) {
 TEST(CellInfoCommand, TextNamesEveryJointAndTheTotal) {
   const CliRun run = safecell_cli({"cell", "info"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const char* expected : {"j1 (base)", "j6 (flange roll)", "swept",
-                               "C-space cells:", "fingerprint:", "m_max = 0.180 m"}) {
+  for (const char* expected : {"joint_1", "joint_6", "swept", "C-space cells:", "fingerprint:",
+                               "m_max = 0.180 m", "robot: rx130_class", "discretise"}) {
     EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " missing in\n" << run.out;
   }
 }

@@ -3,117 +3,127 @@
 #include <yaml-cpp/yaml.h>
 
 #include <fstream>
-#include <initializer_list>
-#include <limits>
 #include <sstream>
 
 #include "safecell/cell/cell_error.hpp"
+#include "yaml_field.hpp"
 
 namespace safecell {
 namespace {
 
-// A YAML node together with where it sits, for error messages.
-struct Field {
-  YAML::Node node;
-  std::string path;  // "joints[2].l_m"
-  SourceLine at;
-};
-
-SourceLine line_of(const YAML::Node& node, const std::string& source) {
-  const YAML::Mark mark = node.Mark();
-  return SourceLine{source, mark.line >= 0 ? mark.line + 1 : 0};
+std::array<double, 3> triple_of(const Field& field, const char* expected) {
+  const auto values = numbers_of(field, 3, expected);
+  return {values[0], values[1], values[2]};
 }
 
-std::string shown(const YAML::Node& node) {
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
-  if (node.IsSequence()) return "a list";
-  if (node.IsMap()) return "a mapping";
-  return "nothing";
-}
-
-void refuse_unknown_keys(const Field& map, std::initializer_list<std::string_view> known) {
-  for (const auto& entry : map.node) {
-    const auto key = entry.first.as<std::string>();
-    bool found = false;
-    std::string expected;
-    for (const auto name : known) {
-      found = found || key == name;
-      expected += (expected.empty() ? "" : ", ") + std::string(name);
-    }
-    if (!found) {
-      throw_cell_error(line_of(entry.first, map.at.source),
-                       (map.path.empty() ? "" : map.path + ".") + key,
-                       "unknown field (expected one of: " + expected + ")");
-    }
-  }
-}
-
-Field require(const Field& map, const std::string& key) {
-  const std::string path = map.path.empty() ? key : map.path + "." + key;
-  const YAML::Node node = map.node[key];
-  if (!node) throw_cell_error(map.at, path, "missing (required)");
-  return Field{node, path, line_of(node, map.at.source)};
-}
-
-double number_of(const Field& field) {
-  if (field.node.IsScalar()) {
-    std::istringstream text(field.node.Scalar());
-    double value = 0.0;
-    text >> value;
-    if (text && text.eof()) return value;
-    // YAML spellings of special values; refused later as not finite, with a clear message.
-    const std::string& s = field.node.Scalar();
-    if (s == ".nan" || s == ".NaN" || s == ".NAN") return std::numeric_limits<double>::quiet_NaN();
-    if (s == ".inf" || s == "+.inf" || s == ".Inf") return std::numeric_limits<double>::infinity();
-    if (s == "-.inf" || s == "-.Inf") return -std::numeric_limits<double>::infinity();
-  }
-  throw_cell_error(field.at, field.path, "expected a number, got " + shown(field.node));
-}
-
-std::string text_of(const Field& field) {
-  if (!field.node.IsScalar() || field.node.Scalar().empty()) {
-    throw_cell_error(field.at, field.path, "expected a non-empty text, got " + shown(field.node));
-  }
-  return field.node.Scalar();
-}
-
-bool flag_of(const Field& field) {
-  if (field.node.IsScalar()) {
-    const std::string& s = field.node.Scalar();
-    if (s == "true") return true;
-    if (s == "false") return false;
-  }
-  throw_cell_error(field.at, field.path, "expected true or false, got " + shown(field.node));
+std::string resolved(const std::string& path, const std::filesystem::path& base_directory) {
+  return std::filesystem::path(path).is_relative()
+             ? (base_directory / path).lexically_normal().string()
+             : path;
 }
 
 JointConfig joint_of(const Field& field) {
-  if (!field.node.IsMap()) {
-    throw_cell_error(field.at, field.path, "expected a mapping, got " + shown(field.node));
-  }
+  require_mapping(field);
   refuse_unknown_keys(field, {"name", "range_deg", "l_m", "discretised"});
   JointConfig joint;
+  joint.at = field.at;
   joint.name = text_of(require(field, "name"));
-
-  const Field range = require(field, "range_deg");
-  if (!range.node.IsSequence() || range.node.size() != 2) {
-    throw_cell_error(range.at, range.path,
-                     "expected [lower, upper] in degrees, got " + shown(range.node));
+  if (field.node["range_deg"]) {
+    const Field range = require(field, "range_deg");
+    const auto values = numbers_of(range, 2, "[lower, upper] in degrees");
+    joint.range_deg = std::array<double, 2>{values[0], values[1]};
+    joint.range_at = range.at;
   }
-  joint.lo_deg = number_of(Field{range.node[0], range.path + "[0]", range.at});
-  joint.hi_deg = number_of(Field{range.node[1], range.path + "[1]", range.at});
-  joint.range_at = range.at;
-
-  const Field lever = require(field, "l_m");
-  joint.l_m = number_of(lever);
-  joint.l_at = lever.at;
-
+  if (field.node["l_m"]) {
+    const Field lever = require(field, "l_m");
+    joint.l_m = number_of(lever);
+    joint.l_at = lever.at;
+  }
   if (field.node["discretised"]) joint.discretised = flag_of(require(field, "discretised"));
   return joint;
 }
 
+RobotConfig robot_of(const Field& field, const std::filesystem::path& base_directory) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"urdf", "tool_link", "tool"});
+  RobotConfig robot;
+  robot.at = field.at;
+  robot.urdf = text_of(require(field, "urdf"));
+  if (robot.urdf.rfind(kBuiltinRobotPrefix, 0) != 0)
+    robot.urdf = resolved(robot.urdf, base_directory);
+  if (field.node["tool_link"]) robot.tool_link = text_of(require(field, "tool_link"));
+  if (field.node["tool"]) {
+    const Field tool = require(field, "tool");
+    require_mapping(tool);
+    refuse_unknown_keys(tool, {"frame", "point_m"});
+    if (tool.node["frame"]) robot.tool_frame = text_of(require(tool, "frame"));
+    if (tool.node["point_m"]) {
+      const auto point = numbers_of(require(tool, "point_m"), 3, "[x, y, z] in metres");
+      robot.tool_point_m = {point[0], point[1], point[2]};
+    }
+  }
+  return robot;
+}
+
+BoxObstacleConfig obstacle_of(const Field& field) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"name", "size_m", "centre_m", "yaw_deg"});
+  BoxObstacleConfig box;
+  box.at = field.at;
+  box.name = text_of(require(field, "name"));
+  box.size_m = triple_of(require(field, "size_m"), "[x, y, z] edge lengths in metres");
+  box.centre_m = triple_of(require(field, "centre_m"), "[x, y, z] in metres");
+  if (field.node["yaw_deg"]) box.yaw_deg = number_of(require(field, "yaw_deg"));
+  return box;
+}
+
+CameraConfig camera_of(const Field& field, const std::filesystem::path& base_directory) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"name", "calibration", "look_at"});
+  CameraConfig camera;
+  camera.at = field.at;
+  camera.name = text_of(require(field, "name"));
+  const bool has_calibration = static_cast<bool>(field.node["calibration"]);
+  if (has_calibration == static_cast<bool>(field.node["look_at"])) {
+    throw_cell_error(field.at, field.path,
+                     "expected exactly one of 'calibration' (a file) and 'look_at' (a placement)");
+  }
+  if (has_calibration) {
+    camera.calibration = resolved(text_of(require(field, "calibration")), base_directory);
+    return camera;
+  }
+  const Field look_at = require(field, "look_at");
+  require_mapping(look_at);
+  refuse_unknown_keys(look_at, {"position_m", "target_m", "horizontal_fov_deg", "size_px"});
+  LookAtConfig placement;
+  placement.position_m = triple_of(require(look_at, "position_m"), "[x, y, z] in metres");
+  placement.target_m = triple_of(require(look_at, "target_m"), "[x, y, z] in metres");
+  placement.horizontal_fov_deg = number_of(require(look_at, "horizontal_fov_deg"));
+  const Field size = require(look_at, "size_px");
+  if (!size.node.IsSequence() || size.node.size() != 2) {
+    throw_cell_error(size.at, size.path,
+                     "expected [width, height] in pixels, got " + shown(size.node));
+  }
+  placement.width_px = integer_of(element(size, 0));
+  placement.height_px = integer_of(element(size, 1));
+  camera.look_at = placement;
+  return camera;
+}
+
+template <typename Item, typename Read>
+std::vector<Item> list_of(const Field& field, Read read) {
+  if (!field.node.IsSequence()) {
+    throw_cell_error(field.at, field.path, "expected a list, got " + shown(field.node));
+  }
+  std::vector<Item> items;
+  for (std::size_t i = 0; i < field.node.size(); ++i) items.push_back(read(element(field, i)));
+  return items;
+}
+
 }  // namespace
 
-CellConfig parse_cell_yaml(std::string_view text, const std::string& source) {
+CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
+                           const std::filesystem::path& base_directory) {
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
@@ -125,7 +135,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source) {
   if (!root.IsMap()) {
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
-  refuse_unknown_keys(top, {"name", "m_max_m", "joints"});
+  refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
+                            "feature_grid", "camera_threshold"});
 
   CellConfig cell;
   cell.source = source;
@@ -133,17 +144,38 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source) {
   const Field m_max = require(top, "m_max_m");
   cell.m_max_m = number_of(m_max);
   cell.m_max_at = m_max.at;
+  if (root["robot"]) cell.robot = robot_of(require(top, "robot"), base_directory);
 
   const Field joints = require(top, "joints");
-  if (!joints.node.IsSequence()) {
-    throw_cell_error(joints.at, joints.path,
-                     "expected a list of joints, got " + shown(joints.node));
-  }
   cell.joints_at = joints.at;
-  for (std::size_t i = 0; i < joints.node.size(); ++i) {
-    const YAML::Node node = joints.node[i];
-    cell.joints.push_back(
-        joint_of(Field{node, "joints[" + std::to_string(i) + "]", line_of(node, source)}));
+  cell.joints = list_of<JointConfig>(joints, joint_of);
+
+  if (root["size_m"]) {
+    const Field size = require(top, "size_m");
+    cell.size_m = triple_of(size, "[x, y, z] inside dimensions in metres");
+    cell.size_at = size.at;
+  }
+  if (root["cameras"]) {
+    const Field cameras = require(top, "cameras");
+    cell.cameras_at = cameras.at;
+    cell.cameras = list_of<CameraConfig>(
+        cameras, [&](const Field& item) { return camera_of(item, base_directory); });
+  }
+  if (root["obstacles"]) {
+    cell.obstacles = list_of<BoxObstacleConfig>(require(top, "obstacles"), obstacle_of);
+  }
+  if (root["feature_grid"]) {
+    const Field grid = require(top, "feature_grid");
+    require_mapping(grid);
+    refuse_unknown_keys(grid, {"columns", "rows"});
+    cell.feature_grid.at = grid.at;
+    cell.feature_grid.columns = integer_of(require(grid, "columns"));
+    cell.feature_grid.rows = integer_of(require(grid, "rows"));
+  }
+  if (root["camera_threshold"]) {
+    const Field threshold = require(top, "camera_threshold");
+    cell.camera_threshold = integer_of(threshold);
+    cell.camera_threshold_at = threshold.at;
   }
   return cell;
 }
@@ -161,7 +193,7 @@ CellConfig load_cell_file(const std::filesystem::path& path) {
   std::ostringstream text;
   text << file.rdbuf();
   if (file.bad()) throw_cell_error(SourceLine{path.string(), 0}, "(file)", "read error");
-  return parse_cell_yaml(text.str(), path.string());
+  return parse_cell_yaml(text.str(), path.string(), path.parent_path());
 }
 
 }  // namespace safecell

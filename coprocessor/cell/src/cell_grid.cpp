@@ -30,14 +30,15 @@ std::string number(double value) {
     case GridField::kRange: {
       const JointConfig& joint = cell.joints.at(joint_index);
       throw_cell_error(joint.range_at, joint_path + ".range_deg",
-                       "value [" + number(joint.lo_deg) + ", " + number(joint.hi_deg) +
+                       "value [" + number(joint.range_deg.value()[0]) + ", " +
+                           number(joint.range_deg.value()[1]) +
                            "], expected finite limits with lower < upper");
     }
     case GridField::kLeverArm: {
       const JointConfig& joint = cell.joints.at(joint_index);
       throw_cell_error(
           joint.l_at, joint_path + ".l_m",
-          "value " + number(joint.l_m) +
+          "value " + number(joint.l_m.value()) +
               (joint.discretised ? ", expected at least m_max_m / 2 = " +
                                        number(cell.m_max_m / 2.0) + " m for a discretised joint"
                                  : ", expected a finite distance >= 0 m"));
@@ -60,7 +61,8 @@ GridSpec grid_spec_of(const CellConfig& cell) {
   for (std::size_t j = 0; j < copied; ++j) {
     const JointConfig& joint = cell.joints[j];
     spec.joints[j] =
-        JointSpec{radians(joint.lo_deg), radians(joint.hi_deg), joint.l_m, joint.discretised};
+        JointSpec{radians(joint.range_deg.value()[0]), radians(joint.range_deg.value()[1]),
+                  joint.l_m.value(), joint.discretised};
   }
   return spec;
 }

@@ -6,6 +6,7 @@
 #include "safecell/base/freestanding_math.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
+#include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
 #include "safecell/cli/text_table.hpp"
 
@@ -20,7 +21,14 @@ std::string hex64(std::uint64_t value) {
   return text;
 }
 
-nlohmann::ordered_json to_json(const CellConfig& cell, const CspaceGrid& grid) {
+// A joint whose farthest point stays within m_max of its axis moves the robot little: sweeping it
+// inside every cell costs less than discretising it.
+std::string advice(const CspaceGrid& grid, std::uint32_t joint) {
+  return grid.joint(joint).l_m > grid.m_max_m() ? "discretise" : "sweep";
+}
+
+nlohmann::ordered_json to_json(const CellModel& model, const CspaceGrid& grid) {
+  const CellConfig& cell = model.config;
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
     const JointSpec& spec = grid.joint(j);
@@ -28,6 +36,8 @@ nlohmann::ordered_json to_json(const CellConfig& cell, const CspaceGrid& grid) {
     joint["name"] = cell.joints[j].name;
     joint["range_rad"] = {spec.lo_rad, spec.hi_rad};
     joint["l_m"] = spec.l_m;
+    if (model.lever_arms) joint["l_tool_m"] = model.lever_arms->tool_m[j];
+    joint["advice"] = advice(grid, j);
     joint["discretised"] = spec.discretised;
     joint["dq_rad"] = spec.discretised ? nlohmann::ordered_json(grid.max_move_step_rad(j))
                                        : nlohmann::ordered_json(nullptr);
@@ -39,6 +49,7 @@ nlohmann::ordered_json to_json(const CellConfig& cell, const CspaceGrid& grid) {
   nlohmann::ordered_json report;
   report["cell"] = cell.name;
   report["source"] = cell.source;
+  if (model.robot) report["robot"] = model.robot->name;
   report["m_max_m"] = grid.m_max_m();
   report["joints"] = std::move(joints);
   report["cells"] = grid.cell_count();
@@ -47,16 +58,23 @@ nlohmann::ordered_json to_json(const CellConfig& cell, const CspaceGrid& grid) {
   return report;
 }
 
-void print_text(const CellConfig& cell, const CspaceGrid& grid, std::ostream& out) {
-  out << cell.name << "  (" << cell.source << ")\n"
-      << "max-move m_max = " << fixed(grid.m_max_m(), 3) << " m\n\n";
+void print_text(const CellModel& model, const CspaceGrid& grid, std::ostream& out) {
+  const CellConfig& cell = model.config;
+  out << cell.name << "  (" << cell.source << ")\n";
+  if (model.robot) {
+    out << "robot: " << model.robot->name << " (" << model.robot->source
+        << "); l is computed from its collision geometry, l tool from the tool point\n";
+  }
+  out << "max-move m_max = " << fixed(grid.m_max_m(), 3) << " m\n\n";
   using Align = TextTable::Align;
   TextTable table({{"joint", Align::kLeft},
                    {"range [deg]", Align::kRight},
                    {"l [m]", Align::kRight},
+                   {"l tool [m]", Align::kRight},
                    {"dq [deg]", Align::kRight},
                    {"width [deg]", Align::kRight},
-                   {"cells", Align::kRight}});
+                   {"cells", Align::kRight},
+                   {"advice", Align::kLeft}});
   std::string product;
   for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
     const JointSpec& spec = grid.joint(j);
@@ -64,8 +82,10 @@ void print_text(const CellConfig& cell, const CspaceGrid& grid, std::ostream& ou
     table.add_row({cell.joints[j].name,
                    fixed(degrees(spec.lo_rad), 1) + " .. " + fixed(degrees(spec.hi_rad), 1),
                    fixed(spec.l_m, 3),
+                   model.lever_arms ? fixed(model.lever_arms->tool_m[j], 3) : "-",
                    swept ? "swept" : fixed(degrees(grid.max_move_step_rad(j)), 2),
-                   fixed(degrees(grid.cell_width_rad(j)), 2), std::to_string(grid.cells_along(j))});
+                   fixed(degrees(grid.cell_width_rad(j)), 2), std::to_string(grid.cells_along(j)),
+                   advice(grid, j)});
     if (!swept) product += (product.empty() ? "" : " x ") + std::to_string(grid.cells_along(j));
   }
   table.print(out);
@@ -76,13 +96,13 @@ void print_text(const CellConfig& cell, const CspaceGrid& grid, std::ostream& ou
 }  // namespace
 
 void run_cell_info(const CellInfoOptions& options, std::ostream& out) {
-  const CellConfig cell =
-      options.cell_path.empty() ? default_cell() : load_cell_file(options.cell_path);
-  const CspaceGrid grid = make_grid(cell);
+  const CellModel model = load_cell_model(
+      options.cell_path.empty() ? default_cell() : load_cell_file(options.cell_path));
+  const CspaceGrid grid = make_grid(model.config);
   if (options.json) {
-    out << to_json(cell, grid).dump(2) << '\n';
+    out << to_json(model, grid).dump(2) << '\n';
   } else {
-    print_text(cell, grid, out);
+    print_text(model, grid, out);
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cli/cell_info_command.hpp"
+#include "safecell/cli/sim_render_command.hpp"
+#include "safecell/files/atomic_write.hpp"
 
 namespace safecell {
 namespace {
@@ -32,6 +34,26 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   info->add_flag("--json", cell_info.json, "Print one JSON object instead of a table");
   info->callback([&] { action = [&] { run_cell_info(cell_info, out); }; });
 
+  CLI::App* sim = app.add_subcommand("sim", "The simulated work cell");
+  sim->require_subcommand(1);
+  SimRenderOptions render;
+  CLI::App* render_command = sim->add_subcommand(
+      "render", "Write what every camera sees (PNG) for one robot configuration and some humans");
+  render_command->add_option("--cell", render.cell_path,
+                             "Cell file (YAML); without it the built-in default cell");
+  render_command->add_option("--q", render.q_deg,
+                             "Joint values in degrees, comma-separated, e.g. 0,30,60,0,45,0");
+  render_command->add_option("--q-rad", render.q_rad, "Joint values in radians instead");
+  render_command->add_option("--human", render.humans,
+                             "A human standing at x,y (metres, on the floor), optionally facing "
+                             "x,y,heading_deg; repeat for more");
+  render_command->add_option("--out", render.out_dir, "Folder for the PNG files")->required();
+  render_command->add_option("--seed", render.seed, "Seed of the sensor noise")
+      ->capture_default_str();
+  render_command->add_option("--noise", render.noise_sigma, "Sensor noise sigma in gray levels")
+      ->capture_default_str();
+  render_command->callback([&] { action = [&] { run_sim_render(render, out); }; });
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -41,6 +63,12 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     action();
     return 0;
   } catch (const CellError& error) {
+    err << "error: " << error.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::invalid_argument& error) {
+    err << "error: " << error.what() << '\n';
+    return kExitBadInput;
+  } catch (const FileError& error) {
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const std::exception& error) {

@@ -27,8 +27,11 @@ void TextTable::print(std::ostream& out) const {
   const auto print_row = [&](const auto& cell_at) {
     for (std::size_t c = 0; c < columns_.size(); ++c) {
       const bool left = columns_[c].second == Align::kLeft;
-      out << (c == 0 ? "" : "  ") << (left ? std::left : std::right)
-          << std::setw(static_cast<int>(widths[c])) << cell_at(c);
+      const bool last = c + 1 == columns_.size();
+      // No padding after the last column: lines end without trailing blanks.
+      const int width = left && last ? 0 : static_cast<int>(widths[c]);
+      out << (c == 0 ? "" : "  ") << (left ? std::left : std::right) << std::setw(width)
+          << cell_at(c);
     }
     out << std::right << '\n';
   };

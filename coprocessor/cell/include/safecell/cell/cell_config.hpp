@@ -3,6 +3,8 @@
 // robot, cameras and obstacles are built from. Every value remembers the line it came from, so a
 // value refused later can still be named in the file.
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,12 +17,60 @@ struct SourceLine {
 
 struct JointConfig {
   std::string name;
-  double lo_deg = 0.0;
-  double hi_deg = 0.0;
-  double l_m = 0.0;
+  // With a robot, the range defaults to the arm's limits and may only narrow them, and l_m is
+  // computed from the model; without one, both are given.
+  std::optional<std::array<double, 2>> range_deg;
+  std::optional<double> l_m;
   bool discretised = true;
+  SourceLine at;
   SourceLine range_at;
   SourceLine l_at;
+};
+
+inline constexpr const char* kBuiltinRobotPrefix = "builtin:";
+
+struct RobotConfig {
+  // A URDF path (relative paths are resolved against the cell file's folder when it is read),
+  // or "builtin:rx130_class" for the project's own arm.
+  std::string urdf;
+  std::string tool_link;   // where the chain ends; empty: the deepest leaf of the URDF
+  std::string tool_frame;  // the frame the tool hangs from; empty: the last movable link
+  std::array<double, 3> tool_point_m{0.0, 0.0, 0.0};
+  SourceLine at;
+};
+
+// A static obstacle: a box standing in the cell (tables, fences, machines). It never appears in
+// the difference images, so it enters the forbidden map from its geometry.
+struct BoxObstacleConfig {
+  std::string name;
+  std::array<double, 3> size_m{0.0, 0.0, 0.0};
+  std::array<double, 3> centre_m{0.0, 0.0, 0.0};
+  double yaw_deg = 0.0;  // turn about the vertical axis
+  SourceLine at;
+};
+
+// A camera placed by where it stands and what it looks at (no lens distortion).
+struct LookAtConfig {
+  std::array<double, 3> position_m{0.0, 0.0, 0.0};
+  std::array<double, 3> target_m{0.0, 0.0, 0.0};
+  double horizontal_fov_deg = 0.0;
+  int width_px = 0;
+  int height_px = 0;
+};
+
+struct CameraConfig {
+  std::string name;
+  // Exactly one of: an OpenCV calibration YAML (path resolved against the cell file's folder),
+  // or a look-at placement.
+  std::string calibration;
+  std::optional<LookAtConfig> look_at;
+  SourceLine at;
+};
+
+struct FeatureGridConfig {
+  int columns = 64;
+  int rows = 64;
+  SourceLine at;
 };
 
 struct CellConfig {
@@ -28,8 +78,20 @@ struct CellConfig {
   std::string source;
   double m_max_m = 0.0;
   SourceLine m_max_at;
+  std::optional<RobotConfig> robot;
   std::vector<JointConfig> joints;
   SourceLine joints_at;
+  // The cell's inside: floor centre at the origin, z up; walls at +-x/2, +-y/2.
+  std::array<double, 3> size_m{4.0, 4.0, 3.0};
+  SourceLine size_at;
+  std::vector<CameraConfig> cameras;
+  SourceLine cameras_at;
+  std::vector<BoxObstacleConfig> obstacles;
+  FeatureGridConfig feature_grid;
+  // A configuration is critical when at least this many cameras see it blocked (paper §4.4).
+  // Unset: 2, or 1 with a single camera.
+  std::optional<int> camera_threshold;
+  SourceLine camera_threshold_at;
 };
 
 }  // namespace safecell

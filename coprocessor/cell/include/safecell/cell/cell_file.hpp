@@ -10,9 +10,11 @@
 
 namespace safecell {
 
-// Throws CellError for malformed YAML and for missing, unknown or mistyped fields. Values are
-// checked for sense (ranges, m_max, lever arms) when the grid is built: see make_grid().
-CellConfig parse_cell_yaml(std::string_view text, const std::string& source);
+// Throws CellError for malformed YAML and for missing, unknown or mistyped fields. Relative
+// paths in the file are taken from base_directory. Values are checked for sense when the cell
+// model and its grid are built: see load_cell_model() and make_grid().
+CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
+                           const std::filesystem::path& base_directory = {});
 
 // As parse_cell_yaml(), reading the file first; a file that cannot be read is a CellError too.
 CellConfig load_cell_file(const std::filesystem::path& path);

@@ -7,6 +7,7 @@
 
 namespace safecell {
 
+// Precondition: a complete cell (see load_cell_model()); std::bad_optional_access otherwise.
 GridSpec grid_spec_of(const CellConfig& cell);
 
 // Throws CellError naming the file, line, field and value when the grid cannot be built.

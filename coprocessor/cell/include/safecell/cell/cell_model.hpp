@@ -1,0 +1,32 @@
+#pragma once
+// A cell with its robot loaded: every joint's range and lever arm l_i settled, from the robot
+// model when the cell names one (l_i computed, ranges defaulting to the arm's limits) or from the
+// cell file alone otherwise.
+
+#include <optional>
+
+#include "safecell/camera/feature_grid.hpp"
+#include "safecell/camera/pinhole_camera.hpp"
+#include "safecell/cell/cell_config.hpp"
+#include "safecell/robot/lever_arms.hpp"
+#include "safecell/robot/robot_model.hpp"
+
+namespace safecell {
+
+struct CellModel {
+  CellConfig config;  // complete: every joint has range_deg and l_m
+  std::optional<RobotModel> robot;
+  std::optional<LeverArms> lever_arms;
+  std::vector<PinholeCamera> cameras;
+  FeatureGrid feature_grid;
+  std::vector<PlacedShape> obstacles;
+  int camera_threshold = 1;  // settled: the cell's value or the default
+};
+
+// Throws CellError naming the file, line and field: an unreadable robot, joints that do not match
+// the robot's, a range outside the arm's limits, l_m given for a robot (it is computed), or range
+// or l_m missing without one; unusable cameras, feature grid, obstacles, cell size or camera
+// threshold.
+CellModel load_cell_model(CellConfig config);
+
+}  // namespace safecell

@@ -1,0 +1,139 @@
+#include "safecell/cell/cell_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "safecell/cell/cell_error.hpp"
+#include "safecell/cell/cell_scene.hpp"
+#include "safecell/robot/default_robot.hpp"
+#include "safecell/robot/robot_error.hpp"
+#include "safecell/robot/urdf_loader.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+// Degrees are rounded in files; a range may exceed the arm's limit by this much.
+constexpr double kRangeTolerance_deg = 1e-6;
+
+std::string joint_path(std::size_t j) { return "joints[" + std::to_string(j) + "]"; }
+
+RobotModel load_robot(const RobotConfig& robot) {
+  const std::string builtin = std::string(kBuiltinRobotPrefix) + "rx130_class";
+  try {
+    if (robot.urdf.rfind(kBuiltinRobotPrefix, 0) == 0) {
+      if (robot.urdf != builtin) {
+        throw_cell_error(robot.at, "robot.urdf",
+                         "unknown built-in robot '" + robot.urdf + "' (expected " + builtin + ")");
+      }
+      RobotModel model = default_robot();
+      if (!robot.tool_link.empty() && !model.frame(robot.tool_link)) {
+        throw_cell_error(robot.at, "robot.tool_link",
+                         "the built-in arm has no link '" + robot.tool_link + "'");
+      }
+      return model;
+    }
+    return load_urdf_file(robot.urdf, UrdfOptions{robot.tool_link});
+  } catch (const RobotError& error) {
+    throw_cell_error(robot.at, "robot.urdf", error.what());
+  }
+}
+
+void settle_from_robot(CellModel& model) {
+  CellConfig& cell = model.config;
+  const RobotModel& robot = *model.robot;
+  if (cell.joints.size() != robot.dof()) {
+    std::string names;
+    for (const auto& joint : robot.joints) names += (names.empty() ? "" : ", ") + joint.name;
+    throw_cell_error(cell.joints_at, "joints",
+                     std::to_string(cell.joints.size()) + " joints listed, but robot '" +
+                         robot.name + "' has " + std::to_string(robot.dof()) + " movable joints (" +
+                         names + ")");
+  }
+  const RobotConfig& robot_config = *cell.robot;
+  try {
+    model.lever_arms = compute_lever_arms(
+        robot, ToolSpec{robot_config.tool_frame,
+                        {},
+                        Eigen::Vector3d(robot_config.tool_point_m[0], robot_config.tool_point_m[1],
+                                        robot_config.tool_point_m[2])});
+  } catch (const RobotError& error) {
+    throw_cell_error(robot_config.at, "robot.tool", error.what());
+  }
+  for (std::size_t j = 0; j < robot.dof(); ++j) {
+    JointConfig& joint = cell.joints[j];
+    const RobotJoint& arm = robot.joints[j];
+    if (joint.name != arm.name) {
+      throw_cell_error(joint.at, joint_path(j) + ".name",
+                       "'" + joint.name + "' is not the robot's joint " + std::to_string(j + 1) +
+                           " '" + arm.name + "' (list the joints in chain order)");
+    }
+    if (joint.l_m) {
+      throw_cell_error(joint.l_at, joint_path(j) + ".l_m",
+                       "given, but l_i is computed from the robot model; remove it");
+    }
+    joint.l_m = model.lever_arms->envelope_m[j];
+    const std::array<double, 2> limits{arm.lower * kDegPerRad, arm.upper * kDegPerRad};
+    if (!joint.range_deg) {
+      joint.range_deg = limits;
+      joint.range_at = joint.at;
+    } else if ((*joint.range_deg)[0] < limits[0] - kRangeTolerance_deg ||
+               (*joint.range_deg)[1] > limits[1] + kRangeTolerance_deg) {
+      throw_cell_error(joint.range_at, joint_path(j) + ".range_deg",
+                       "value [" + std::to_string((*joint.range_deg)[0]) + ", " +
+                           std::to_string((*joint.range_deg)[1]) +
+                           "] lies outside the arm's limits [" + std::to_string(limits[0]) + ", " +
+                           std::to_string(limits[1]) + "]");
+    }
+  }
+}
+
+void settle_scene(CellModel& model) {
+  const CellConfig& cell = model.config;
+  for (const double size : cell.size_m) {
+    if (!(std::isfinite(size) && size > 0.0)) {
+      throw_cell_error(cell.size_at, "size_m",
+                       "value " + std::to_string(size) + ", expected inside dimensions above 0 m");
+    }
+  }
+  model.cameras = cell_cameras(cell);
+  model.feature_grid = cell_feature_grid(cell, model.cameras);
+  model.obstacles = cell_obstacles(cell);
+  const int cameras = static_cast<int>(model.cameras.size());
+  model.camera_threshold = cell.camera_threshold.value_or(std::min(2, std::max(1, cameras)));
+  if (model.camera_threshold < 1 || (cameras > 0 && model.camera_threshold > cameras)) {
+    throw_cell_error(cell.camera_threshold_at, "camera_threshold",
+                     "value " + std::to_string(model.camera_threshold) +
+                         ", expected 1 to the number of cameras (" + std::to_string(cameras) + ")");
+  }
+}
+
+void settle_joints_without_robot(const CellConfig& cell) {
+  for (std::size_t j = 0; j < cell.joints.size(); ++j) {
+    const JointConfig& joint = cell.joints[j];
+    if (!joint.range_deg) {
+      throw_cell_error(joint.at, joint_path(j) + ".range_deg",
+                       "missing (required without a robot)");
+    }
+    if (!joint.l_m) {
+      throw_cell_error(joint.at, joint_path(j) + ".l_m", "missing (required without a robot)");
+    }
+  }
+}
+
+}  // namespace
+
+CellModel load_cell_model(CellConfig config) {
+  CellModel model{std::move(config), std::nullopt, std::nullopt, {}, {}, {}, 1};
+  if (model.config.robot) {
+    model.robot = load_robot(*model.config.robot);
+    settle_from_robot(model);
+  } else {
+    settle_joints_without_robot(model.config);
+  }
+  settle_scene(model);
+  return model;
+}
+
+}  // namespace safecell

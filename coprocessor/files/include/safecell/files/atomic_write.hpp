@@ -1,0 +1,28 @@
+#pragma once
+// Replacing a file so that readers see the old contents or the new, never a part, and a crash
+// or power cut loses neither.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace safecell {
+
+// "<path>: <problem>"; problem() alone for callers that name the path their own way.
+class FileError : public std::runtime_error {
+ public:
+  FileError(const std::filesystem::path& path, std::string problem)
+      : std::runtime_error(path.string() + ": " + problem), problem_(std::move(problem)) {}
+  const std::string& problem() const { return problem_; }
+
+ private:
+  std::string problem_;
+};
+
+// Writes `bytes` to a new temporary file beside `path`, flushes it to disk, and renames it over
+// `path`. Throws FileError ("<path>: <problem>") on failure; the temporary file is then removed.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+}  // namespace safecell

@@ -1,0 +1,24 @@
+#pragma once
+// Forward kinematics: where every link and every collision shape is for joint values q.
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "safecell/robot/robot_model.hpp"
+
+namespace safecell {
+
+// Poses of links[0..dof-1] in the base frame. Precondition: q.size() == model.dof() (checked,
+// std::invalid_argument).
+std::vector<Eigen::Isometry3d> link_poses(const RobotModel& model, const std::vector<double>& q);
+
+// Pose of a named frame (e.g. "flange") in the base frame.
+Eigen::Isometry3d frame_pose(const RobotModel& model, const std::vector<double>& q,
+                             const std::string& frame_name);
+
+// Every collision shape of base and links, placed in the frame `base_pose` maps the base into.
+std::vector<PlacedShape> collision_shapes_at(
+    const RobotModel& model, const std::vector<double>& q,
+    const Eigen::Isometry3d& base_pose = Eigen::Isometry3d::Identity());
+
+}  // namespace safecell

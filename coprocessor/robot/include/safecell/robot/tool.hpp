@@ -1,0 +1,20 @@
+#pragma once
+// The tool the robot carries: collision shapes and a tool centre point, hung from a named frame
+// of the robot (a link such as "flange"). A different tool is a different robot geometry: it needs
+// its own grid and look-up tables (the paper, Section 4.1).
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "safecell/geometry/shape.hpp"
+
+namespace safecell {
+
+struct ToolSpec {
+  std::string frame;                                  // empty: the last movable link
+  std::vector<PlacedShape> shapes;                    // in that frame
+  Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  // tool centre point, in that frame
+};
+
+}  // namespace safecell

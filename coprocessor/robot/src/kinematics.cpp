@@ -1,0 +1,59 @@
+#include "safecell/robot/kinematics.hpp"
+
+#include <stdexcept>
+
+namespace safecell {
+namespace {
+
+Eigen::Isometry3d joint_motion(const RobotJoint& joint, double q) {
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+  if (joint.type == JointType::kPrismatic) {
+    motion.translation() = q * joint.axis;
+  } else {
+    motion.linear() = Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+  }
+  return motion;
+}
+
+}  // namespace
+
+std::vector<Eigen::Isometry3d> link_poses(const RobotModel& model, const std::vector<double>& q) {
+  if (q.size() != model.dof()) {
+    throw std::invalid_argument("robot '" + model.name + "' has " + std::to_string(model.dof()) +
+                                " joints, got " + std::to_string(q.size()) + " joint values");
+  }
+  std::vector<Eigen::Isometry3d> poses;
+  poses.reserve(model.dof());
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  for (std::size_t j = 0; j < model.dof(); ++j) {
+    pose = pose * model.joints[j].origin * joint_motion(model.joints[j], q[j]);
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
+Eigen::Isometry3d frame_pose(const RobotModel& model, const std::vector<double>& q,
+                             const std::string& frame_name) {
+  const auto frame = model.frame(frame_name);
+  if (!frame)
+    throw std::invalid_argument("robot '" + model.name + "' has no frame '" + frame_name + "'");
+  if (frame->link < 0) return frame->pose;
+  return link_poses(model, q)[static_cast<std::size_t>(frame->link)] * frame->pose;
+}
+
+std::vector<PlacedShape> collision_shapes_at(const RobotModel& model, const std::vector<double>& q,
+                                             const Eigen::Isometry3d& base_pose) {
+  const auto poses = link_poses(model, q);
+  std::vector<PlacedShape> shapes;
+  for (const auto& shape : model.base.collision) {
+    shapes.push_back(PlacedShape{shape.shape, base_pose * shape.pose});
+  }
+  for (std::size_t j = 0; j < model.dof(); ++j) {
+    for (const auto& shape : model.links[j].collision) {
+      shapes.push_back(PlacedShape{shape.shape, base_pose * poses[j] * shape.pose});
+    }
+  }
+  return shapes;
+}
+
+}  // namespace safecell

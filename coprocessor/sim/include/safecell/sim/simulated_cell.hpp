@@ -1,0 +1,53 @@
+#pragma once
+// The simulated work cell: the robot, the humans and the static boxes as every camera sees them,
+// and the exact ground truth of what collides. It stands in for the real cell and cameras in
+// tests, in validation and in the demo.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "safecell/camera/pinhole_camera.hpp"
+#include "safecell/robot/robot_model.hpp"
+#include "safecell/sim/camera_renderer.hpp"
+#include "safecell/sim/human_figure.hpp"
+
+namespace safecell {
+
+// One moment of the cell: the robot's joint values and where the humans are.
+struct SimScene {
+  std::vector<double> q;
+  std::vector<HumanPose> humans;
+};
+
+class SimulatedCell {
+ public:
+  // size_m: the cell's inside (floor centre at the origin, z up); the robot base stands at the
+  // origin. Throws std::invalid_argument when there is no camera.
+  SimulatedCell(RobotModel robot, std::vector<PinholeCamera> cameras, const Eigen::Vector3d& size_m,
+                std::vector<PlacedShape> obstacles, const SensorSettings& sensor);
+
+  std::size_t camera_count() const { return renderers_.size(); }
+  const PinholeCamera& camera(std::size_t index) const { return renderers_.at(index).camera(); }
+  const RobotModel& robot() const { return robot_; }
+  const std::vector<PlacedShape>& obstacles() const { return obstacles_; }
+
+  // One 8-bit frame per camera.
+  std::vector<cv::Mat> render(const SimScene& scene, std::uint64_t frame_index, double time_s);
+  // As render(), with any moving surfaces (none: the empty cell).
+  std::vector<cv::Mat> render_surfaces(const std::vector<SurfaceMesh>& moving,
+                                       std::uint64_t frame_index, double time_s);
+
+  // The robot and the humans as surfaces to render (robot first).
+  std::vector<SurfaceMesh> moving_surfaces(const SimScene& scene) const;
+  // Pixels of one camera the robot covers, occlusion ignored (CV_8UC1, 255 = covered).
+  cv::Mat robot_coverage(std::size_t camera_index, const std::vector<double>& q);
+
+ private:
+  RobotModel robot_;
+  std::vector<PlacedShape> obstacles_;
+  std::vector<CameraRenderer> renderers_;
+};
+
+}  // namespace safecell

@@ -1,0 +1,61 @@
+#include "safecell/sim/simulated_cell.hpp"
+
+#include <stdexcept>
+
+#include "safecell/robot/kinematics.hpp"
+#include "safecell/sim/cell_scenery.hpp"
+
+namespace safecell {
+namespace {
+
+// Brightness of the moving bodies: a light robot, dark clothes, a lighter head.
+constexpr std::uint8_t kRobotAlbedo = 215;
+constexpr std::uint8_t kClothesAlbedo = 55;
+constexpr std::uint8_t kSkinAlbedo = 165;
+
+}  // namespace
+
+SimulatedCell::SimulatedCell(RobotModel robot, std::vector<PinholeCamera> cameras,
+                             const Eigen::Vector3d& size_m, std::vector<PlacedShape> obstacles,
+                             const SensorSettings& sensor)
+    : robot_(std::move(robot)), obstacles_(std::move(obstacles)) {
+  if (cameras.empty()) throw std::invalid_argument("the simulated cell needs at least one camera");
+  const auto scenery = cell_scenery(size_m, obstacles_);
+  for (std::size_t i = 0; i < cameras.size(); ++i) {
+    SensorSettings own = sensor;
+    own.seed = sensor.seed + i;  // independent noise per camera
+    renderers_.emplace_back(std::move(cameras[i]), scenery, own);
+  }
+}
+
+std::vector<SurfaceMesh> SimulatedCell::moving_surfaces(const SimScene& scene) const {
+  std::vector<SurfaceMesh> surfaces;
+  surfaces.push_back(surface_of(collision_shapes_at(robot_, scene.q), kRobotAlbedo));
+  for (const auto& human : scene.humans) {
+    std::vector<PlacedShape> body = human_shapes(human);
+    const auto head = static_cast<std::size_t>(HumanPart::kHead);
+    surfaces.push_back(surface_of({body[head]}, kSkinAlbedo));
+    body.erase(body.begin() + static_cast<std::ptrdiff_t>(head));
+    surfaces.push_back(surface_of(body, kClothesAlbedo));
+  }
+  return surfaces;
+}
+
+std::vector<cv::Mat> SimulatedCell::render(const SimScene& scene, std::uint64_t frame_index,
+                                           double time_s) {
+  return render_surfaces(moving_surfaces(scene), frame_index, time_s);
+}
+
+std::vector<cv::Mat> SimulatedCell::render_surfaces(const std::vector<SurfaceMesh>& moving,
+                                                    std::uint64_t frame_index, double time_s) {
+  std::vector<cv::Mat> frames;
+  for (auto& renderer : renderers_) frames.push_back(renderer.render(moving, frame_index, time_s));
+  return frames;
+}
+
+cv::Mat SimulatedCell::robot_coverage(std::size_t camera_index, const std::vector<double>& q) {
+  return renderers_.at(camera_index)
+      .coverage({surface_of(collision_shapes_at(robot_, q), kRobotAlbedo)});
+}
+
+}  // namespace safecell

@@ -1,0 +1,153 @@
+#include "safecell/cell/cell_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "safecell/cell/cell_error.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/cell/default_cell.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr const char* kBuiltinCell = R"(name: built-in arm
+m_max_m: 0.18
+robot: {urdf: "builtin:rx130_class", tool: {frame: flange}}
+joints:
+  - {name: joint_1}
+  - {name: joint_2}
+  - {name: joint_3}
+  - {name: joint_4, range_deg: [-240, 240]}
+  - {name: joint_5, discretised: false}
+  - {name: joint_6, discretised: false}
+)";
+
+std::string model_error_of(const std::string& text) {
+  try {
+    static_cast<void>(load_cell_model(parse_cell_yaml(text, "cell.yaml")));
+  } catch (const CellError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
+
+TEST(CellModel, LeverArmsAndRangesComeFromTheRobot) {
+  const CellModel model = load_cell_model(parse_cell_yaml(kBuiltinCell, "cell.yaml"));
+  ASSERT_TRUE(model.robot.has_value());
+  // l_1 of the built-in arm: 1.51 m to the flange, a little more to the collision shapes.
+  EXPECT_GT(model.config.joints[0].l_m.value(), 1.51);
+  EXPECT_LT(model.config.joints[0].l_m.value(), 1.56);
+  EXPECT_EQ(model.config.joints[0].l_m.value(), model.lever_arms->envelope_m[0]);
+  // Joint 1's range defaults to the arm's +-160 deg; joint 4 is narrowed by the cell.
+  EXPECT_NEAR(model.config.joints[0].range_deg.value()[1], 160.0, 1e-4);
+  EXPECT_EQ(model.config.joints[3].range_deg.value()[0], -240.0);
+}
+
+TEST(CellModel, TheDefaultCellHasThePapersSize) {
+  const CspaceGrid grid = make_grid(load_cell_model(default_cell()).config);
+  // The paper: 181,400 cells for its RX130 at m_max = 18 cm.
+  EXPECT_GE(grid.cell_count(), 150000u);
+  EXPECT_LE(grid.cell_count(), 200000u);
+}
+
+TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
+  const CellModel model = load_cell_model(default_cell());
+  ASSERT_EQ(model.cameras.size(), 4u);
+  for (const auto& camera : model.cameras) {
+    EXPECT_EQ(camera.intrinsics().width_px, 704);
+    EXPECT_EQ(camera.intrinsics().height_px, 576);
+    EXPECT_NEAR(camera.position_m().z(), 2.9, 1e-12);
+    EXPECT_NEAR(std::abs(camera.position_m().x()), 1.95, 1e-12);
+    // Every camera sees the robot base.
+    const auto base = camera.project(Eigen::Vector3d::Zero());
+    ASSERT_TRUE(base.has_value());
+    EXPECT_TRUE(camera.in_image(*base)) << camera.name();
+  }
+  EXPECT_EQ(model.feature_grid.cell_width_px(), 11);
+  EXPECT_EQ(model.feature_grid.cell_height_px(), 9);
+  ASSERT_EQ(model.obstacles.size(), 1u);
+  EXPECT_EQ(model.camera_threshold, 2);
+}
+
+TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
+  const std::string camera =
+      "cameras:\n  - {name: a, look_at: {position_m: [2, 2, 3], target_m: [0, 0, 0], "
+      "horizontal_fov_deg: 75, size_px: [704, 576]}}\n";
+  const std::string cell = std::string(kBuiltinCell) + camera;
+  EXPECT_EQ(load_cell_model(parse_cell_yaml(cell, "cell.yaml")).cameras.size(), 1u);
+
+  const std::string twice = model_error_of(cell +
+                                           "  - {name: a, look_at: {position_m: [2, -2, 3], "
+                                           "target_m: [0, 0, 0], horizontal_fov_deg: 75, "
+                                           "size_px: [704, 576]}}\n");
+  EXPECT_EQ(twice,
+            "cell.yaml:13: cameras[1].name: 'a' is used by an earlier camera; names must differ");
+  const std::string wide =
+      model_error_of(replaced(cell, "horizontal_fov_deg: 75", "horizontal_fov_deg: 190"));
+  EXPECT_EQ(wide.rfind("cell.yaml:12: cameras[0].look_at: ", 0), 0u) << wide;
+  const std::string missing = model_error_of(std::string(kBuiltinCell) +
+                                             "cameras:\n  - {name: b, calibration: /no/b.yaml}\n");
+  EXPECT_EQ(missing.rfind("cell.yaml:12: cameras[0].calibration: ", 0), 0u) << missing;
+  EXPECT_NE(missing.find("/no/b.yaml"), std::string::npos) << missing;
+  EXPECT_EQ(
+      model_error_of(std::string(kBuiltinCell) + "cameras:\n  - {name: c}\n"),
+      "cell.yaml:12: cameras[0]: expected exactly one of 'calibration' (a file) and 'look_at' "
+      "(a placement)");
+
+  const std::string grid = model_error_of(cell + "feature_grid: {columns: 50, rows: 64}\n");
+  EXPECT_EQ(grid.rfind("cell.yaml:13: feature_grid: value [50 x 64] for camera 'a': ", 0), 0u)
+      << grid;
+  EXPECT_EQ(model_error_of(cell + "camera_threshold: 2\n"),
+            "cell.yaml:13: camera_threshold: value 2, expected 1 to the number of cameras (1)");
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) +
+                           "obstacles:\n  - {name: t, size_m: [1, -1, 1], centre_m: [0, 0, 0]}\n"),
+            "cell.yaml:12: obstacles[0].size_m: value -1.000000, expected edge lengths above 0 m");
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "size_m: [4, 0, 3]\n"),
+            "cell.yaml:11: size_m: value 0.000000, expected inside dimensions above 0 m");
+}
+
+TEST(CellModel, JointsMustMatchTheRobot) {
+  EXPECT_EQ(model_error_of(replaced(kBuiltinCell, "  - {name: joint_6, discretised: false}\n", "")),
+            "cell.yaml:5: joints: 5 joints listed, but robot 'rx130_class' has 6 movable joints "
+            "(joint_1, joint_2, joint_3, joint_4, joint_5, joint_6)");
+  EXPECT_EQ(model_error_of(replaced(kBuiltinCell, "{name: joint_3}", "{name: elbow}")),
+            "cell.yaml:7: joints[2].name: 'elbow' is not the robot's joint 3 'joint_3' (list the "
+            "joints in chain order)");
+  EXPECT_EQ(
+      model_error_of(replaced(kBuiltinCell, "{name: joint_2}", "{name: joint_2, l_m: 1.3}")),
+      "cell.yaml:6: joints[1].l_m: given, but l_i is computed from the robot model; remove it");
+  const std::string wide = model_error_of(replaced(kBuiltinCell, "[-240, 240]", "[-300, 240]"));
+  EXPECT_EQ(wide.rfind("cell.yaml:8: joints[3].range_deg: value [-300", 0), 0u) << wide;
+  EXPECT_NE(wide.find("outside the arm's limits"), std::string::npos) << wide;
+}
+
+TEST(CellModel, RobotsThatCannotBeLoadedAreNamed) {
+  EXPECT_EQ(model_error_of(replaced(kBuiltinCell, "builtin:rx130_class", "builtin:ur5")),
+            "cell.yaml:3: robot.urdf: unknown built-in robot 'builtin:ur5' (expected "
+            "builtin:rx130_class)");
+  const std::string missing =
+      model_error_of(replaced(kBuiltinCell, "builtin:rx130_class", "/no/arm.urdf"));
+  EXPECT_EQ(missing, "cell.yaml:3: robot.urdf: /no/arm.urdf: cannot be opened for reading");
+  const std::string tool =
+      model_error_of(replaced(kBuiltinCell, "frame: flange", "frame: gripper"));
+  EXPECT_NE(tool.find("robot.tool: "), std::string::npos) << tool;
+  EXPECT_NE(tool.find("'gripper'"), std::string::npos) << tool;
+}
+
+TEST(CellModel, WithoutARobotRangeAndLeverArmAreRequired) {
+  EXPECT_EQ(model_error_of("name: x\nm_max_m: 0.18\njoints:\n  - {name: a, l_m: 1.0}\n"),
+            "cell.yaml:4: joints[0].range_deg: missing (required without a robot)");
+  EXPECT_EQ(model_error_of("name: x\nm_max_m: 0.18\njoints:\n  - {name: a, range_deg: [0, 1]}\n"),
+            "cell.yaml:4: joints[0].l_m: missing (required without a robot)");
+}
+
+}  // namespace
+}  // namespace safecell
