@@ -1,10 +1,10 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "safecell/files/atomic_write.hpp"
 #include "error_text.hpp"
 #include "safecell/camera/calibration_file.hpp"
 #include "safecell/camera/camera_error.hpp"
+#include "safecell/files/atomic_write.hpp"
 
 namespace safecell {
 namespace {

@@ -21,7 +21,10 @@ std::uint8_t shade_of(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const 
                       std::uint8_t albedo) {
   const Eigen::Vector3d normal = (b - a).cross(c - a);
   const double length = normal.norm();
-  const double lambert = length > 0.0 ? std::abs(normal.x() * kLightX + normal.y() * kLightY + normal.z() * kLightZ) / length : 0.0;
+  const double lambert =
+      length > 0.0
+          ? std::abs(normal.x() * kLightX + normal.y() * kLightY + normal.z() * kLightZ) / length
+          : 0.0;
   return static_cast<std::uint8_t>(std::lround(albedo * (0.45 + 0.55 * lambert)));
 }
 
