@@ -66,8 +66,8 @@ std::string yaml_text_of(const std::filesystem::path& path) {
 
 class CalibrationReader {
  public:
-  CalibrationReader(std::string source, cv::FileNode root)
-      : source_(std::move(source)), root_(std::move(root)) {
+  CalibrationReader(std::string source, const cv::FileNode& root)
+      : source_(std::move(source)), root_(root) {
     if (!root_.isMap()) {
       fail("(file)", "expected a mapping of calibration keys, got " + shown(root_));
     }
@@ -102,7 +102,7 @@ class CalibrationReader {
           (expected.empty() ? "a " : " or ") + std::to_string(rows) + "x" + std::to_string(cols);
     }
     expected += " opencv-matrix (rows, cols, dt, data)";
-    const Matrix m = matrix_of(key, require(key, expected), expected);
+    Matrix m = matrix_of(key, require(key, expected), expected);
     bool allowed = false;
     for (const auto& [rows, cols] : shapes) allowed = allowed || (m.rows == rows && m.cols == cols);
     if (!allowed) fail(key, "a " + m.shape() + " matrix, expected " + expected);
