@@ -63,7 +63,7 @@ Entries good_entries() {
 
 std::string yaml_of(const Entries& entries) {
   std::string text = "%YAML:1.0\n---\n";
-  for (const auto& [key, value] : entries) text += key + ": " + value + "\n";
+  for (const auto& [key, value] : entries) text.append(key).append(": ").append(value).append("\n");
   return text;
 }
 
@@ -226,7 +226,7 @@ std::vector<BadCase> bad_cases() {
       {"binary",
        std::string("\x7f"
                    "ELF\x02\x01\x01\0\0\x03\xff\xfe",
-                   14),
+                   12),
        "(file)", "does not begin with"},
       {"empty", "", "(file)", "does not begin with"},
       {"only the header", "%YAML:1.0\n", "(file)",

@@ -114,6 +114,30 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
             "cell.yaml:11: size_m: value 0.000000, expected inside dimensions above 0 m");
 }
 
+TEST(CellModel, ToolShapesJoinTheRobotAndItsLeverArms) {
+  const std::string with_tool =
+      replaced(kBuiltinCell, "tool: {frame: flange}",
+               "tool: {frame: flange, point_m: [0, 0, 0.2], shapes: [{cylinder: {radius_m: 0.04, "
+               "length_m: 0.2}, origin_m: [0, 0, 0.1]}]}");
+  const CellModel plain = load_cell_model(parse_cell_yaml(kBuiltinCell, "cell.yaml"));
+  const CellModel tooled = load_cell_model(parse_cell_yaml(with_tool, "cell.yaml"));
+  // The tool tip 0.2 m past the flange: l_1 = 1.51 + 0.2 = 1.71 m (a little more for the
+  // cylinder's radius and the conservative sampling).
+  EXPECT_GE(tooled.lever_arms->tool_m[0], 1.71);
+  EXPECT_LE(tooled.lever_arms->tool_m[0], 1.73);
+  EXPECT_GT(tooled.config.joints[0].l_m.value(), plain.config.joints[0].l_m.value() + 0.18);
+  EXPECT_EQ(tooled.robot->links[5].collision.size(), plain.robot->links[5].collision.size() + 1);
+
+  EXPECT_EQ(model_error_of(
+                replaced(kBuiltinCell, "tool: {frame: flange}",
+                         "tool: {shapes: [{sphere: {radius_m: 0.1}, box: {size_m: [1, 1, 1]}}]}")),
+            "cell.yaml:3: robot.tool.shapes[0]: expected exactly one of box, sphere, cylinder and "
+            "capsule");
+  EXPECT_EQ(model_error_of(replaced(kBuiltinCell, "tool: {frame: flange}",
+                                    "tool: {shapes: [{sphere: {radius_m: -0.1}}]}")),
+            "cell.yaml:3: robot.tool.shapes[0].sphere.radius_m: value -0.1, expected above 0");
+}
+
 TEST(CellModel, JointsMustMatchTheRobot) {
   EXPECT_EQ(model_error_of(replaced(kBuiltinCell, "  - {name: joint_6, discretised: false}\n", "")),
             "cell.yaml:5: joints: 5 joints listed, but robot 'rx130_class' has 6 movable joints "

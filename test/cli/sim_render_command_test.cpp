@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <string>
@@ -48,6 +49,30 @@ TEST(SimRenderCommand, WritesOneImagePerCameraAndASheet) {
   EXPECT_NE(run.out.find("ground truth: robot clear of the obstacles"), std::string::npos)
       << run.out;
   std::filesystem::remove_all(out);
+}
+
+TEST(SimRenderCommand, RendersTheRx160WithItsVisualMeshes) {
+  const auto urdf =
+      std::filesystem::path(SAFECELL_SHARED_DATA_DIR) / "robots/staubli_rx160/rx160.urdf";
+  if (!std::filesystem::exists(urdf)) GTEST_SKIP() << "no RX160 model at " << urdf;
+  const auto out = fresh_directory("safecell-sim-render-rx160");
+  const auto cell = std::filesystem::temp_directory_path() / "safecell-rx160-cell.yaml";
+  std::ofstream(cell) << "name: rx160\nm_max_m: 0.18\nrobot: {urdf: " << urdf.string()
+                      << ", tool: {frame: flange}}\njoints:\n"
+                         "  - {name: joint_1}\n  - {name: joint_2}\n  - {name: joint_3}\n"
+                         "  - {name: joint_4, discretised: false}\n"
+                         "  - {name: joint_5, discretised: false}\n"
+                         "  - {name: joint_6, discretised: false}\n"
+                         "cameras:\n  - {name: front, look_at: {position_m: [3, 0, 2], target_m: "
+                         "[0, 0, 1], horizontal_fov_deg: 70, size_px: [352, 288]}}\n"
+                         "feature_grid: {columns: 32, rows: 32}\n";
+  const CliRun run = safecell_cli({"sim", "render", "--cell", cell.string(), "--q",
+                                   "0,30,60,0,30,0", "--visual", "--out", out.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const cv::Mat image = cv::imread((out / "front.png").string(), cv::IMREAD_UNCHANGED);
+  EXPECT_EQ(image.cols, 352);
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(cell);
 }
 
 TEST(SimRenderCommand, TheGroundTruthSeesAHumanInTheRobotsWay) {

@@ -64,5 +64,24 @@ TEST(Kinematics, ShapesFollowTheirLinks) {
   EXPECT_THROW(static_cast<void>(link_poses(robot, {0.0})), std::invalid_argument);
 }
 
+TEST(Kinematics, VisualShapesFallBackToCollisionShapes) {
+  const RobotModel robot = default_robot();  // primitives for collision only
+  const std::vector<double> q{0.1, 0.2, 0.3, 0.4, 0.5, 0.6};
+  EXPECT_EQ(visual_shapes_at(robot, q).size(), collision_shapes_at(robot, q).size());
+}
+
+TEST(Kinematics, Rx160VisualMeshesDifferFromCollisionMeshes) {
+  SAFECELL_REQUIRE_RX160(robot);
+  const std::vector<double> q(6, 0.3);
+  const auto visual = visual_shapes_at(robot, q);
+  const auto collision = collision_shapes_at(robot, q);
+  ASSERT_EQ(visual.size(), collision.size());
+  const auto& visual_mesh = std::get<std::shared_ptr<const TriangleMesh>>(visual.back().shape);
+  const auto& collision_mesh =
+      std::get<std::shared_ptr<const TriangleMesh>>(collision.back().shape);
+  EXPECT_NE(visual_mesh, collision_mesh);
+  EXPECT_LT((visual.back().pose.matrix() - collision.back().pose.matrix()).norm(), 1e-12);
+}
+
 }  // namespace
 }  // namespace safecell

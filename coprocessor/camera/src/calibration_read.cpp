@@ -151,7 +151,7 @@ class CalibrationReader {
   cv::FileNode root_;
 };
 
-// [fx 0 cx; 0 fy cy; 0 0 1]: no skew, nothing else.
+// [fx 0 cx; 0 fy cy; 0 0 1]: the model has no skew.
 void read_camera_matrix(const CalibrationReader& reader, CameraIntrinsics& intrinsics) {
   const char* key = "camera_matrix";
   const Matrix k = reader.matrix(key, {{3, 3}});
@@ -161,7 +161,7 @@ void read_camera_matrix(const CalibrationReader& reader, CameraIntrinsics& intri
     if (k.at(row, col) != value) {
       reader.fail(key, "entry (" + std::to_string(row) + ", " + std::to_string(col) + ") is " +
                            number_text(k.at(row, col)) + ", expected " + number_text(value) +
-                           " in [fx 0 cx; 0 fy cy; 0 0 1] (skew is not supported)");
+                           " as in [fx 0 cx; 0 fy cy; 0 0 1]");
     }
   }
   intrinsics.fx_px = k.at(0, 0);

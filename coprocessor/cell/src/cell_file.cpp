@@ -2,7 +2,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "safecell/cell/cell_error.hpp"
@@ -43,6 +46,76 @@ JointConfig joint_of(const Field& field) {
   return joint;
 }
 
+template <typename Item, typename Read>
+std::vector<Item> list_of(const Field& field, Read read) {
+  if (!field.node.IsSequence()) {
+    throw_cell_error(field.at, field.path, "expected a list, got " + shown(field.node));
+  }
+  std::vector<Item> items;
+  for (std::size_t i = 0; i < field.node.size(); ++i) items.push_back(read(element(field, i)));
+  return items;
+}
+
+double positive_of(const Field& field) {
+  const double value = number_of(field);
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw_cell_error(field.at, field.path, "value " + field.node.Scalar() + ", expected above 0");
+  }
+  return value;
+}
+
+// One tool shape: exactly one of box, sphere, cylinder, capsule, and where it sits in the tool
+// frame (origin_m, rpy_deg: roll, pitch, yaw about x, y, z as in URDF).
+PlacedShape tool_shape_of(const Field& field) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"box", "sphere", "cylinder", "capsule", "origin_m", "rpy_deg"});
+  const int kinds = (field.node["box"] ? 1 : 0) + (field.node["sphere"] ? 1 : 0) +
+                    (field.node["cylinder"] ? 1 : 0) + (field.node["capsule"] ? 1 : 0);
+  if (kinds != 1) {
+    throw_cell_error(field.at, field.path,
+                     "expected exactly one of box, sphere, cylinder and capsule");
+  }
+  PlacedShape placed;
+  if (field.node["box"]) {
+    const Field box = require(field, "box");
+    require_mapping(box);
+    refuse_unknown_keys(box, {"size_m"});
+    const auto size = numbers_of(require(box, "size_m"), 3, "[x, y, z] edge lengths in metres");
+    for (std::size_t i = 0; i < 3; ++i) positive_of(element(require(box, "size_m"), i));
+    placed.shape = Box{{size[0], size[1], size[2]}};
+  } else if (field.node["sphere"]) {
+    const Field sphere = require(field, "sphere");
+    require_mapping(sphere);
+    refuse_unknown_keys(sphere, {"radius_m"});
+    placed.shape = Sphere{positive_of(require(sphere, "radius_m"))};
+  } else {
+    const bool cylinder = static_cast<bool>(field.node["cylinder"]);
+    const Field round = require(field, cylinder ? "cylinder" : "capsule");
+    require_mapping(round);
+    refuse_unknown_keys(round, {"radius_m", "length_m"});
+    const double radius = positive_of(require(round, "radius_m"));
+    const double length = positive_of(require(round, "length_m"));
+    if (cylinder) {
+      placed.shape = Cylinder{radius, length};
+    } else {
+      placed.shape = Capsule{radius, length};
+    }
+  }
+  if (field.node["origin_m"]) {
+    const auto origin = numbers_of(require(field, "origin_m"), 3, "[x, y, z] in metres");
+    placed.pose.translation() = Eigen::Vector3d(origin[0], origin[1], origin[2]);
+  }
+  if (field.node["rpy_deg"]) {
+    const auto rpy = numbers_of(require(field, "rpy_deg"), 3, "[roll, pitch, yaw] in degrees");
+    const double to_rad = std::numbers::pi / 180.0;
+    placed.pose.linear() = (Eigen::AngleAxisd(rpy[2] * to_rad, Eigen::Vector3d::UnitZ()) *
+                            Eigen::AngleAxisd(rpy[1] * to_rad, Eigen::Vector3d::UnitY()) *
+                            Eigen::AngleAxisd(rpy[0] * to_rad, Eigen::Vector3d::UnitX()))
+                               .toRotationMatrix();
+  }
+  return placed;
+}
+
 RobotConfig robot_of(const Field& field, const std::filesystem::path& base_directory) {
   require_mapping(field);
   refuse_unknown_keys(field, {"urdf", "tool_link", "tool"});
@@ -55,11 +128,14 @@ RobotConfig robot_of(const Field& field, const std::filesystem::path& base_direc
   if (field.node["tool"]) {
     const Field tool = require(field, "tool");
     require_mapping(tool);
-    refuse_unknown_keys(tool, {"frame", "point_m"});
+    refuse_unknown_keys(tool, {"frame", "point_m", "shapes"});
     if (tool.node["frame"]) robot.tool_frame = text_of(require(tool, "frame"));
     if (tool.node["point_m"]) {
       const auto point = numbers_of(require(tool, "point_m"), 3, "[x, y, z] in metres");
       robot.tool_point_m = {point[0], point[1], point[2]};
+    }
+    if (tool.node["shapes"]) {
+      robot.tool_shapes = list_of<PlacedShape>(require(tool, "shapes"), tool_shape_of);
     }
   }
   return robot;
@@ -108,16 +184,6 @@ CameraConfig camera_of(const Field& field, const std::filesystem::path& base_dir
   placement.height_px = integer_of(element(size, 1));
   camera.look_at = placement;
   return camera;
-}
-
-template <typename Item, typename Read>
-std::vector<Item> list_of(const Field& field, Read read) {
-  if (!field.node.IsSequence()) {
-    throw_cell_error(field.at, field.path, "expected a list, got " + shown(field.node));
-  }
-  std::vector<Item> items;
-  for (std::size_t i = 0; i < field.node.size(); ++i) items.push_back(read(element(field, i)));
-  return items;
 }
 
 }  // namespace

@@ -52,12 +52,12 @@ void settle_from_robot(CellModel& model) {
                          names + ")");
   }
   const RobotConfig& robot_config = *cell.robot;
+  const ToolSpec tool{robot_config.tool_frame, robot_config.tool_shapes,
+                      Eigen::Vector3d(robot_config.tool_point_m[0], robot_config.tool_point_m[1],
+                                      robot_config.tool_point_m[2])};
   try {
-    model.lever_arms = compute_lever_arms(
-        robot, ToolSpec{robot_config.tool_frame,
-                        {},
-                        Eigen::Vector3d(robot_config.tool_point_m[0], robot_config.tool_point_m[1],
-                                        robot_config.tool_point_m[2])});
+    attach_tool(*model.robot, tool);
+    model.lever_arms = compute_lever_arms(*model.robot, tool);
   } catch (const RobotError& error) {
     throw_cell_error(robot_config.at, "robot.tool", error.what());
   }

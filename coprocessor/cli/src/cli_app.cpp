@@ -52,6 +52,9 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->capture_default_str();
   render_command->add_option("--noise", render.noise_sigma, "Sensor noise sigma in gray levels")
       ->capture_default_str();
+  render_command->add_flag("--visual", render.visual,
+                           "Show the robot's visual geometry (meshes) instead of its collision "
+                           "geometry");
   render_command->callback([&] { action = [&] { run_sim_render(render, out); }; });
 
   try {

@@ -140,7 +140,8 @@ void run_sim_render(const SimRenderOptions& options, std::ostream& out) {
   SimulatedCell sim(
       *model.robot, model.cameras,
       Eigen::Vector3d(model.config.size_m[0], model.config.size_m[1], model.config.size_m[2]),
-      model.obstacles, SensorSettings{options.noise_sigma, 0.0, 30.0, options.seed});
+      model.obstacles, SensorSettings{options.noise_sigma, 0.0, 30.0, options.seed},
+      options.visual ? RobotAppearance::kVisual : RobotAppearance::kCollision);
   const std::vector<cv::Mat> frames = sim.render(scene, 0, 0.0);
 
   const std::filesystem::path directory(options.out_dir);

@@ -41,19 +41,40 @@ Eigen::Isometry3d frame_pose(const RobotModel& model, const std::vector<double>&
   return link_poses(model, q)[static_cast<std::size_t>(frame->link)] * frame->pose;
 }
 
-std::vector<PlacedShape> collision_shapes_at(const RobotModel& model, const std::vector<double>& q,
-                                             const Eigen::Isometry3d& base_pose) {
+namespace {
+
+// The shapes `pick` chooses from the base and every link, placed by the link poses.
+template <typename Pick>
+std::vector<PlacedShape> placed_shapes(const RobotModel& model, const std::vector<double>& q,
+                                       const Eigen::Isometry3d& base_pose, Pick pick) {
   const auto poses = link_poses(model, q);
   std::vector<PlacedShape> shapes;
-  for (const auto& shape : model.base.collision) {
+  for (const auto& shape : pick(model.base)) {
     shapes.push_back(PlacedShape{shape.shape, base_pose * shape.pose});
   }
   for (std::size_t j = 0; j < model.dof(); ++j) {
-    for (const auto& shape : model.links[j].collision) {
+    for (const auto& shape : pick(model.links[j])) {
       shapes.push_back(PlacedShape{shape.shape, base_pose * poses[j] * shape.pose});
     }
   }
   return shapes;
+}
+
+}  // namespace
+
+std::vector<PlacedShape> collision_shapes_at(const RobotModel& model, const std::vector<double>& q,
+                                             const Eigen::Isometry3d& base_pose) {
+  return placed_shapes(
+      model, q, base_pose,
+      [](const RobotLink& link) -> const std::vector<PlacedShape>& { return link.collision; });
+}
+
+std::vector<PlacedShape> visual_shapes_at(const RobotModel& model, const std::vector<double>& q,
+                                          const Eigen::Isometry3d& base_pose) {
+  return placed_shapes(model, q, base_pose,
+                       [](const RobotLink& link) -> const std::vector<PlacedShape>& {
+                         return link.visual.empty() ? link.collision : link.visual;
+                       });
 }
 
 }  // namespace safecell

@@ -6,7 +6,6 @@
 #include <numbers>
 
 #include "safecell/geometry/shape_bounds.hpp"
-#include "safecell/robot/robot_error.hpp"
 
 namespace safecell {
 namespace {
@@ -106,23 +105,14 @@ void append(std::vector<Eigen::Vector3d>& to, const std::vector<Eigen::Vector3d>
 }  // namespace
 
 LeverArms compute_lever_arms(const RobotModel& model, const ToolSpec& tool) {
-  if (model.dof() == 0) throw RobotError(model.source + ": the robot has no movable joint");
-  const std::string frame_name = tool.frame.empty() ? model.links.back().name : tool.frame;
-  const auto frame = model.frame(frame_name);
-  if (!frame)
-    throw RobotError(model.source + ": the tool hangs from '" + frame_name +
-                     "', which is not a link of the robot");
-  if (frame->link < 0) {
-    throw RobotError(model.source + ": the tool hangs from '" + frame_name +
-                     "', which does not move (it is part of the base)");
-  }
-  std::vector<Eigen::Vector3d> tool_points{frame->pose * tool.point_m};
+  const auto frame = tool_frame(model, tool);
+  std::vector<Eigen::Vector3d> tool_points{frame.pose * tool.point_m};
   for (const auto& shape : tool.shapes) {
-    append(tool_points, extreme_points(PlacedShape{shape.shape, frame->pose * shape.pose}));
+    append(tool_points, extreme_points(PlacedShape{shape.shape, frame.pose * shape.pose}));
   }
 
   std::vector<std::vector<Eigen::Vector3d>> tool_only(model.dof());
-  tool_only[static_cast<std::size_t>(frame->link)] = tool_points;
+  tool_only[static_cast<std::size_t>(frame.link)] = tool_points;
   std::vector<std::vector<Eigen::Vector3d>> envelope = tool_only;
   for (std::size_t k = 0; k < model.dof(); ++k) {
     for (const auto& shape : model.links[k].collision) append(envelope[k], extreme_points(shape));

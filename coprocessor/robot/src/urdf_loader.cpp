@@ -169,7 +169,7 @@ class ChainBuilder {
     return path;
   }
 
-  // Adds a link's collision geometry to the movable link it is folded into.
+  // Adds a link's collision and visual geometry to the movable link it is folded into.
   void add_link_geometry(const urdf::Link& link) {
     model_.frames.push_back(NamedFrame{link.name, current_, pose_});
     RobotLink& target =
@@ -178,6 +178,11 @@ class ChainBuilder {
       if (!collision || !collision->geometry) continue;
       target.collision.push_back(PlacedShape{shape_of(*collision->geometry, link.name),
                                              pose_ * to_isometry(collision->origin)});
+    }
+    for (const auto& visual : link.visual_array) {
+      if (!visual || !visual->geometry) continue;
+      target.visual.push_back(
+          PlacedShape{shape_of(*visual->geometry, link.name), pose_ * to_isometry(visual->origin)});
     }
   }
 
@@ -238,7 +243,7 @@ class ChainBuilder {
     }
     if (joint.limits) robot_joint.max_speed = joint.limits->velocity;
     model_.joints.push_back(robot_joint);
-    model_.links.push_back(RobotLink{joint.child_link_name, {}});
+    model_.links.push_back(RobotLink{joint.child_link_name, {}, {}});
     current_ = static_cast<int>(model_.joints.size()) - 1;
     pose_ = Eigen::Isometry3d::Identity();
   }

@@ -17,8 +17,8 @@ constexpr std::uint8_t kSkinAlbedo = 165;
 
 SimulatedCell::SimulatedCell(RobotModel robot, std::vector<PinholeCamera> cameras,
                              const Eigen::Vector3d& size_m, std::vector<PlacedShape> obstacles,
-                             const SensorSettings& sensor)
-    : robot_(std::move(robot)), obstacles_(std::move(obstacles)) {
+                             const SensorSettings& sensor, RobotAppearance appearance)
+    : robot_(std::move(robot)), appearance_(appearance), obstacles_(std::move(obstacles)) {
   if (cameras.empty()) throw std::invalid_argument("the simulated cell needs at least one camera");
   const auto scenery = cell_scenery(size_m, obstacles_);
   for (std::size_t i = 0; i < cameras.size(); ++i) {
@@ -28,9 +28,14 @@ SimulatedCell::SimulatedCell(RobotModel robot, std::vector<PinholeCamera> camera
   }
 }
 
+std::vector<PlacedShape> SimulatedCell::robot_shapes(const std::vector<double>& q) const {
+  return appearance_ == RobotAppearance::kVisual ? visual_shapes_at(robot_, q)
+                                                 : collision_shapes_at(robot_, q);
+}
+
 std::vector<SurfaceMesh> SimulatedCell::moving_surfaces(const SimScene& scene) const {
   std::vector<SurfaceMesh> surfaces;
-  surfaces.push_back(surface_of(collision_shapes_at(robot_, scene.q), kRobotAlbedo));
+  surfaces.push_back(surface_of(robot_shapes(scene.q), kRobotAlbedo));
   for (const auto& human : scene.humans) {
     std::vector<PlacedShape> body = human_shapes(human);
     const auto head = static_cast<std::size_t>(HumanPart::kHead);
@@ -54,8 +59,7 @@ std::vector<cv::Mat> SimulatedCell::render_surfaces(const std::vector<SurfaceMes
 }
 
 cv::Mat SimulatedCell::robot_coverage(std::size_t camera_index, const std::vector<double>& q) {
-  return renderers_.at(camera_index)
-      .coverage({surface_of(collision_shapes_at(robot_, q), kRobotAlbedo)});
+  return renderers_.at(camera_index).coverage({surface_of(robot_shapes(q), kRobotAlbedo)});
 }
 
 }  // namespace safecell

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "safecell/geometry/shape.hpp"
+
 namespace safecell {
 
 struct SourceLine {
@@ -36,6 +38,7 @@ struct RobotConfig {
   std::string tool_link;   // where the chain ends; empty: the deepest leaf of the URDF
   std::string tool_frame;  // the frame the tool hangs from; empty: the last movable link
   std::array<double, 3> tool_point_m{0.0, 0.0, 0.0};
+  std::vector<PlacedShape> tool_shapes;  // in the tool frame; they join the robot's geometry
   SourceLine at;
 };
 

@@ -17,6 +17,7 @@ struct SimRenderOptions {
   std::string out_dir;
   std::uint64_t seed = 1;
   double noise_sigma = 2.0;
+  bool visual = false;  // show the robot's visual geometry instead of its collision geometry
 };
 
 // Throws CellError for an unusable cell and std::invalid_argument (message naming the option and

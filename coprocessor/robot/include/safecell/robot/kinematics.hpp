@@ -21,4 +21,10 @@ std::vector<PlacedShape> collision_shapes_at(
     const RobotModel& model, const std::vector<double>& q,
     const Eigen::Isometry3d& base_pose = Eigen::Isometry3d::Identity());
 
+// What the robot looks like: each link's visual shapes, or its collision shapes where the URDF
+// gives no visual ones.
+std::vector<PlacedShape> visual_shapes_at(
+    const RobotModel& model, const std::vector<double>& q,
+    const Eigen::Isometry3d& base_pose = Eigen::Isometry3d::Identity());
+
 }  // namespace safecell

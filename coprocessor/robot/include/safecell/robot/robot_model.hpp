@@ -27,6 +27,7 @@ struct RobotJoint {
 struct RobotLink {
   std::string name;
   std::vector<PlacedShape> collision;  // in this link's frame
+  std::vector<PlacedShape> visual;     // what the link looks like; may be empty
 };
 
 // A link of the URDF that was folded into a movable link (or the base) by fixed joints.

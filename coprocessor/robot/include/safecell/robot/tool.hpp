@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "safecell/geometry/shape.hpp"
+#include "safecell/robot/robot_model.hpp"
 
 namespace safecell {
 
@@ -16,5 +17,13 @@ struct ToolSpec {
   std::vector<PlacedShape> shapes;                    // in that frame
   Eigen::Vector3d point_m = Eigen::Vector3d::Zero();  // tool centre point, in that frame
 };
+
+// Adds the tool's shapes to the collision geometry of the link its frame belongs to, so that
+// kinematics, rendering and the ground truth all carry the tool. Throws RobotError when the
+// frame does not exist or is part of the base.
+void attach_tool(RobotModel& model, const ToolSpec& tool);
+
+// The frame the tool hangs from, checked as attach_tool() does.
+NamedFrame tool_frame(const RobotModel& model, const ToolSpec& tool);
 
 }  // namespace safecell

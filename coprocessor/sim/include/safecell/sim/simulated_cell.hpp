@@ -21,12 +21,17 @@ struct SimScene {
   std::vector<HumanPose> humans;
 };
 
+// Which of the robot's shapes the cameras see: its collision geometry (what the look-up tables
+// and the ground truth use) or its visual geometry (what a real camera would see).
+enum class RobotAppearance { kCollision, kVisual };
+
 class SimulatedCell {
  public:
   // size_m: the cell's inside (floor centre at the origin, z up); the robot base stands at the
   // origin. Throws std::invalid_argument when there is no camera.
   SimulatedCell(RobotModel robot, std::vector<PinholeCamera> cameras, const Eigen::Vector3d& size_m,
-                std::vector<PlacedShape> obstacles, const SensorSettings& sensor);
+                std::vector<PlacedShape> obstacles, const SensorSettings& sensor,
+                RobotAppearance appearance = RobotAppearance::kCollision);
 
   std::size_t camera_count() const { return renderers_.size(); }
   const PinholeCamera& camera(std::size_t index) const { return renderers_.at(index).camera(); }
@@ -41,11 +46,15 @@ class SimulatedCell {
 
   // The robot and the humans as surfaces to render (robot first).
   std::vector<SurfaceMesh> moving_surfaces(const SimScene& scene) const;
-  // Pixels of one camera the robot covers, occlusion ignored (CV_8UC1, 255 = covered).
+  // Pixels of one camera the robot (as it appears) covers, occlusion ignored (CV_8UC1, 255 =
+  // covered).
   cv::Mat robot_coverage(std::size_t camera_index, const std::vector<double>& q);
 
  private:
+  std::vector<PlacedShape> robot_shapes(const std::vector<double>& q) const;
+
   RobotModel robot_;
+  RobotAppearance appearance_;
   std::vector<PlacedShape> obstacles_;
   std::vector<CameraRenderer> renderers_;
 };
