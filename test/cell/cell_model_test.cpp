@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "safecell/camera/default_cameras.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
@@ -70,6 +71,16 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
     const auto base = camera.project(Eigen::Vector3d::Zero());
     ASSERT_TRUE(base.has_value());
     EXPECT_TRUE(camera.in_image(*base)) << camera.name();
+  }
+  // The camera module's default_cameras() describes the same set-up: keep the two in step.
+  const auto expected = default_cameras();
+  ASSERT_EQ(expected.size(), model.cameras.size());
+  for (std::size_t c = 0; c < expected.size(); ++c) {
+    EXPECT_EQ(model.cameras[c].name(), expected[c].name());
+    EXPECT_EQ(model.cameras[c].intrinsics(), expected[c].intrinsics());
+    EXPECT_LT(
+        (model.cameras[c].cell_to_camera().matrix() - expected[c].cell_to_camera().matrix()).norm(),
+        1e-12);
   }
   EXPECT_EQ(model.feature_grid.cell_width_px(), 11);
   EXPECT_EQ(model.feature_grid.cell_height_px(), 9);
