@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "cell_errors.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/default_cell.hpp"
 
@@ -26,12 +27,7 @@ joints:
 
 // The message of the CellError that parsing `text` raises.
 std::string error_of(const std::string& text) {
-  try {
-    static_cast<void>(parse_cell_yaml(text, "bad.yaml"));
-  } catch (const CellError& error) {
-    return error.what();
-  }
-  return "(no error)";
+  return test::cell_error_of([&] { static_cast<void>(parse_cell_yaml(text, "bad.yaml")); });
 }
 
 TEST(CellFile, ReadsEveryField) {

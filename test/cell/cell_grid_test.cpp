@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "cell_errors.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_model.hpp"
@@ -22,18 +23,13 @@ joints:
     l_m: 0.5
 )";
 
-std::string grid_error_of(std::string text) {
-  try {
+std::string grid_error_of(const std::string& text) {
+  return test::cell_error_of([&] {
     static_cast<void>(make_grid(load_cell_model(parse_cell_yaml(text, "cell.yaml")).config));
-  } catch (const CellError& error) {
-    return error.what();
-  }
-  return "(no error)";
+  });
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  return text.replace(text.find(from), from.size(), to);
-}
+using test::replaced;
 
 TEST(CellGrid, ConvertsDegreesToRadians) {
   const CspaceGrid grid = make_grid(load_cell_model(parse_cell_yaml(kCell, "cell.yaml")).config);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "cell_errors.hpp"
 #include "safecell/camera/default_cameras.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/cell_file.hpp"
@@ -28,17 +29,11 @@ joints:
 )";
 
 std::string model_error_of(const std::string& text) {
-  try {
-    static_cast<void>(load_cell_model(parse_cell_yaml(text, "cell.yaml")));
-  } catch (const CellError& error) {
-    return error.what();
-  }
-  return "(no error)";
+  return test::cell_error_of(
+      [&] { static_cast<void>(load_cell_model(parse_cell_yaml(text, "cell.yaml"))); });
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  return text.replace(text.find(from), from.size(), to);
-}
+using test::replaced;
 
 TEST(CellModel, LeverArmsAndRangesComeFromTheRobot) {
   const CellModel model = load_cell_model(parse_cell_yaml(kBuiltinCell, "cell.yaml"));

@@ -7,25 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "cli_run.hpp"
 #include "safecell/cli/cli_app.hpp"
 
 namespace safecell {
 namespace {
 
-struct CliRun {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-CliRun safecell_cli(std::vector<std::string> arguments) {
-  arguments.insert(arguments.begin(), "safecell");
-  std::vector<const char*> argv;
-  for (const auto& argument : arguments) argv.push_back(argument.c_str());
-  std::ostringstream out, err;
-  const int code = run_safecell(static_cast<int>(argv.size()), argv.data(), out, err);
-  return CliRun{code, out.str(), err.str()};
-}
+using test::CliRun;
+using test::safecell_cli;
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / name;

@@ -4,7 +4,7 @@
 
 namespace safecell {
 
-extern const char* const kDefaultCellYaml;  // default_cell_text.cpp, generated
+extern const char* const kDefaultCellYaml;  // generated from default_cell.yaml
 
 std::string_view default_cell_yaml() { return kDefaultCellYaml; }
 

@@ -6,7 +6,7 @@
 
 namespace safecell {
 
-extern const char* const kDefaultRobotUrdf;  // default_robot_text.cpp, generated
+extern const char* const kDefaultRobotUrdf;  // generated from robots/rx130_class.urdf
 
 std::string_view default_robot_urdf() { return kDefaultRobotUrdf; }
 

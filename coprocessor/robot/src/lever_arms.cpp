@@ -1,8 +1,8 @@
 #include "safecell/robot/lever_arms.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <map>
 #include <numbers>
 
 #include "safecell/geometry/shape_bounds.hpp"
@@ -11,13 +11,14 @@ namespace safecell {
 namespace {
 
 constexpr double kBinWidth_m = 0.002;
-constexpr int kCircleSamples = 1440;
+constexpr std::size_t kCircleSamples = 1440;
 
 // The points of a set, as seen from an axis through the origin: for each slice of axial
 // position, the largest distance from the axis and the axial extent of the points in the slice.
 class AxisProfile {
  public:
   struct Slice {
+    bool used = false;
     double radius_m = 0.0;
     double h_min_m = 0.0;
     double h_max_m = 0.0;
@@ -31,28 +32,68 @@ class AxisProfile {
     const double radius = (point - h * axis_).norm() + slack_m;
     const auto first = static_cast<long>(std::floor((h - slack_m) / kBinWidth_m));
     const auto last = static_cast<long>(std::floor((h + slack_m) / kBinWidth_m));
+    cover(first, last);
     for (long bin = first; bin <= last; ++bin) {
-      auto [slice, inserted] = slices_.try_emplace(bin, Slice{radius, h - slack_m, h + slack_m});
-      if (inserted) continue;
-      slice->second.radius_m = std::max(slice->second.radius_m, radius);
-      slice->second.h_min_m = std::min(slice->second.h_min_m, h - slack_m);
-      slice->second.h_max_m = std::max(slice->second.h_max_m, h + slack_m);
+      Slice& slice = slices_[static_cast<std::size_t>(bin - first_bin_)];
+      if (!slice.used) {
+        slice = Slice{true, radius, h - slack_m, h + slack_m};
+        continue;
+      }
+      slice.radius_m = std::max(slice.radius_m, radius);
+      slice.h_min_m = std::min(slice.h_min_m, h - slack_m);
+      slice.h_max_m = std::max(slice.h_max_m, h + slack_m);
     }
   }
 
   double max_radius_m() const {
     double radius = 0.0;
-    for (const auto& [bin, slice] : slices_) radius = std::max(radius, slice.radius_m);
+    for (const auto& slice : slices_) radius = std::max(radius, slice.radius_m);
     return radius;
   }
 
-  const std::map<long, Slice>& slices() const { return slices_; }
+  // Every slice, used or not (unused ones have used == false).
+  const std::vector<Slice>& slices() const { return slices_; }
   const Eigen::Vector3d& axis() const { return axis_; }
 
  private:
+  // Grows the slice array (bins first_bin_ ...) so that it holds bins first..last.
+  void cover(long first, long last) {
+    if (slices_.empty()) {
+      first_bin_ = first;
+      slices_.resize(static_cast<std::size_t>(last - first + 1));
+      return;
+    }
+    if (first < first_bin_) {
+      slices_.insert(slices_.begin(), static_cast<std::size_t>(first_bin_ - first), Slice{});
+      first_bin_ = first;
+    }
+    const long end = first_bin_ + static_cast<long>(slices_.size());
+    if (last >= end) slices_.resize(slices_.size() + static_cast<std::size_t>(last - end + 1));
+  }
+
   Eigen::Vector3d axis_;
-  std::map<long, Slice> slices_;
+  long first_bin_ = 0;
+  std::vector<Slice> slices_;
 };
+
+// cos and sin of the circle's sample angles, computed once.
+struct CircleSamples {
+  std::array<double, kCircleSamples> cos{};
+  std::array<double, kCircleSamples> sin{};
+};
+
+const CircleSamples& circle_samples() {
+  static const CircleSamples samples = [] {
+    CircleSamples table;
+    for (std::size_t k = 0; k < kCircleSamples; ++k) {
+      const double angle = 2.0 * std::numbers::pi * static_cast<double>(k) / kCircleSamples;
+      table.cos[k] = std::cos(angle);
+      table.sin[k] = std::sin(angle);
+    }
+    return table;
+  }();
+  return samples;
+}
 
 // Adds to `parent` (an axis profile in the parent link's frame) everything a child profile
 // covers when the child joint moves over its whole range.
@@ -64,9 +105,11 @@ void sweep_into(const AxisProfile& child, const RobotJoint& child_joint, AxisPro
   // A prismatic joint slides the (revolved) child set; a convex measure peaks at the ends.
   std::vector<double> shifts{0.0};
   if (child_joint.type == JointType::kPrismatic) shifts = {child_joint.lower, child_joint.upper};
-  for (const auto& [bin, slice] : child.slices()) {
+  for (const auto& slice : child.slices()) {
+    if (!slice.used) continue;
     // Largest gap between a point of the circle and the nearest sample.
-    const double slack = 2.0 * slice.radius_m * std::sin(std::numbers::pi / (2.0 * kCircleSamples));
+    const double slack = 2.0 * slice.radius_m *
+                         std::sin(std::numbers::pi / (2.0 * static_cast<double>(kCircleSamples)));
     for (const double h : {slice.h_min_m, slice.h_max_m}) {
       for (const double shift : shifts) {
         const Eigen::Vector3d centre = origin * (h * child.axis()) + shift * axis;
@@ -74,9 +117,9 @@ void sweep_into(const AxisProfile& child, const RobotJoint& child_joint, AxisPro
           parent.add(centre, 0.0);
           continue;
         }
-        for (int k = 0; k < kCircleSamples; ++k) {
-          const double angle = 2.0 * std::numbers::pi * k / kCircleSamples;
-          parent.add(centre + slice.radius_m * (std::cos(angle) * u + std::sin(angle) * v), slack);
+        const CircleSamples& circle = circle_samples();
+        for (std::size_t k = 0; k < kCircleSamples; ++k) {
+          parent.add(centre + slice.radius_m * (circle.cos[k] * u + circle.sin[k] * v), slack);
         }
       }
     }
