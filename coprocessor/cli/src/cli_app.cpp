@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "safecell/cell/cell_error.hpp"
+#include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/files/atomic_write.hpp"
@@ -56,6 +57,13 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                            "Show the robot's visual geometry (meshes) instead of its collision "
                            "geometry");
   render_command->callback([&] { action = [&] { run_sim_render(render, out); }; });
+
+  BenchOptions bench;
+  CLI::App* bench_command = app.add_subcommand(
+      "bench", "Run the project's benchmarks on the default cell (median and worst case)");
+  bench_command->add_flag("--json", bench.json, "Print one JSON object instead of a table");
+  bench_command->add_flag("--quick", bench.quick, "Short runs: a smoke test, not a measurement");
+  bench_command->callback([&] { action = [&] { run_bench(bench, out, err); }; });
 
   try {
     app.parse(argc, argv);

@@ -2,8 +2,9 @@
 // 704 x 576 at 30 Hz on one core, so one frame set must take well under 33 ms.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
+#include <cmath>
 
+#include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
 #include "safecell/sim/human_walker.hpp"
@@ -19,28 +20,24 @@ SimulatedCell default_simulated_cell() {
                        model.obstacles, SensorSettings{});
 }
 
-void BM_RenderFourDefaultCameras(benchmark::State& state) {
+void render_four_default_cameras(benchmark::State& state) {
   SimulatedCell sim = default_simulated_cell();
   const HumanWalker walker({{1.8, -1.8}, {0.8, -0.6}, {1.8, 1.0}});
   std::uint64_t frame = 0;
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     const double time_s = static_cast<double>(frame) / 30.0;
     const double phase = 0.7 * time_s;
     const SimScene scene{{0.6 * std::sin(phase), 0.3 + 0.2 * std::cos(phase), 0.8, 0.0, 0.5, 0.0},
                          {walker.pose_at(std::fmod(time_s, walker.arrival_time_s()))}};
     benchmark::DoNotOptimize(sim.render(scene, frame++, time_s));
   }
-  state.counters["frame_sets_per_s"] =
-      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_RenderFourDefaultCameras)
-    ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
-    ->ComputeStatistics("max", [](const std::vector<double>& v) {
-      return *std::max_element(v.begin(), v.end());
-    });
 
 }  // namespace
-}  // namespace safecell
 
-BENCHMARK_MAIN();
+void register_render_benchmarks() {
+  register_benchmark("render_four_default_cameras", render_four_default_cameras,
+                     benchmark::kMillisecond);
+}
+
+}  // namespace safecell

@@ -3,6 +3,8 @@
 // feature images. Target (DESIGN.md section 5): <= 1 ms per cycle on one core. Reported, never
 // asserted. The frames come from the simulated default cell, rendered once before timing: the
 // reference without a human, the current frames with one walking near the robot.
+#include "safecell/bench/project_benchmarks.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -70,10 +72,6 @@ const std::vector<CameraSetUp>& set_up() {
   return cameras;
 }
 
-double max_of(const std::vector<double>& values) {
-  return *std::max_element(values.begin(), values.end());
-}
-
 // Blocked cells over the four cameras with the human, and in an empty scene (false alarms).
 void report_blocked_cells(benchmark::State& state, const std::vector<cv::Mat>& masks) {
   int blocked = 0;
@@ -89,14 +87,14 @@ void report_blocked_cells(benchmark::State& state, const std::vector<cv::Mat>& m
 }
 
 // The production path: each extractor cuts the noise bits as it reads its frame.
-void BM_FourFramesToBlockedMasks(benchmark::State& state) {
+void four_frames_to_blocked_masks(benchmark::State& state) {
   const std::vector<CameraSetUp>& cameras = set_up();
   std::vector<FeatureExtractor> extractors;
   extractors.reserve(cameras.size());
   for (const CameraSetUp& camera : cameras) extractors.emplace_back(camera.grid, camera.noise_bits);
   std::vector<FeatureImages> images(cameras.size());
   std::vector<cv::Mat> masks(cameras.size());
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     for (std::size_t c = 0; c < cameras.size(); ++c) {
       extractors[c].extract(cameras[c].current_frame, images[c]);
       masks[c] = blocked_mask(images[c], cameras[c].reference, kWeights, kThreshold);
@@ -106,13 +104,9 @@ void BM_FourFramesToBlockedMasks(benchmark::State& state) {
   }
   report_blocked_cells(state, masks);
 }
-BENCHMARK(BM_FourFramesToBlockedMasks)
-    ->Unit(benchmark::kMillisecond)
-    ->Repetitions(10)
-    ->ComputeStatistics("max", max_of);
 
 // The same with the noise cut as a pass of its own (cut_noise_bits, then the features).
-void BM_FourFramesToBlockedMasksSeparateCut(benchmark::State& state) {
+void four_frames_to_blocked_masks_separate_cut(benchmark::State& state) {
   const std::vector<CameraSetUp>& cameras = set_up();
   std::vector<FeatureExtractor> extractors;
   extractors.reserve(cameras.size());
@@ -120,7 +114,7 @@ void BM_FourFramesToBlockedMasksSeparateCut(benchmark::State& state) {
   std::vector<cv::Mat> cut(cameras.size());
   std::vector<FeatureImages> images(cameras.size());
   std::vector<cv::Mat> masks(cameras.size());
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     for (std::size_t c = 0; c < cameras.size(); ++c) {
       cut_noise_bits(cameras[c].current_frame, cameras[c].noise_bits, cut[c]);
       extractors[c].extract(cut[c], images[c]);
@@ -131,27 +125,27 @@ void BM_FourFramesToBlockedMasksSeparateCut(benchmark::State& state) {
   }
   report_blocked_cells(state, masks);
 }
-BENCHMARK(BM_FourFramesToBlockedMasksSeparateCut)
-    ->Unit(benchmark::kMillisecond)
-    ->Repetitions(10)
-    ->ComputeStatistics("max", max_of);
 
 // The feature images of one frame alone: the bulk of the cycle.
-void BM_FeatureImagesOfOneFrame(benchmark::State& state) {
+void feature_images_of_one_frame(benchmark::State& state) {
   const CameraSetUp& camera = set_up()[0];
   FeatureExtractor extractor(camera.grid, camera.noise_bits);
   FeatureImages images;
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     extractor.extract(camera.current_frame, images);
     benchmark::ClobberMemory();
   }
 }
-BENCHMARK(BM_FeatureImagesOfOneFrame)
-    ->Unit(benchmark::kMicrosecond)
-    ->Repetitions(10)
-    ->ComputeStatistics("max", max_of);
 
 }  // namespace
-}  // namespace safecell
 
-BENCHMARK_MAIN();
+void register_feature_benchmarks() {
+  register_benchmark("four_frames_to_blocked_masks", four_frames_to_blocked_masks,
+                     benchmark::kMillisecond);
+  register_benchmark("four_frames_to_blocked_masks_separate_cut",
+                     four_frames_to_blocked_masks_separate_cut, benchmark::kMillisecond);
+  register_benchmark("feature_images_of_one_frame", feature_images_of_one_frame,
+                     benchmark::kMillisecond);
+}
+
+}  // namespace safecell

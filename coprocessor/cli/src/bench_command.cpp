@@ -1,0 +1,65 @@
+#include "safecell/cli/bench_command.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "safecell/bench/project_benchmarks.hpp"
+#include "safecell/cli/text_table.hpp"
+
+namespace safecell {
+namespace {
+
+// The figures later issues and DESIGN.md §5 name, from the benchmark that measures each.
+struct NamedFigure {
+  const char* benchmark;
+  const char* median_key;
+  const char* worst_key;
+};
+constexpr NamedFigure kNamedFigures[] = {
+    {"four_frames_to_blocked_masks", "features_ms", "features_worst_ms"},
+    {"render_four_default_cameras", "sim_render_ms", "sim_render_worst_ms"},
+};
+
+}  // namespace
+
+void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& progress) {
+  BenchmarkRunOptions run;
+  if (options.quick) {
+    run.min_time_s = 0.02;
+    run.repetitions = 3;
+  }
+  progress << "running benchmarks (" << run.repetitions << " repetitions of at least "
+           << run.min_time_s << " s each)...\n"
+           << std::flush;
+  const std::vector<BenchmarkFigure> figures = run_project_benchmarks(run);
+
+  if (!options.json) {
+    using Align = TextTable::Align;
+    TextTable table({{"benchmark", Align::kLeft},
+                     {"median [ms]", Align::kRight},
+                     {"worst [ms]", Align::kRight}});
+    for (const auto& figure : figures) {
+      table.add_row({figure.name, fixed(figure.median_ms, 3), fixed(figure.max_ms, 3)});
+    }
+    table.print(out);
+    return;
+  }
+  nlohmann::ordered_json report;
+  for (const auto& named : kNamedFigures) {
+    for (const auto& figure : figures) {
+      if (figure.name != named.benchmark) continue;
+      report[named.median_key] = figure.median_ms;
+      report[named.worst_key] = figure.max_ms;
+    }
+  }
+  nlohmann::ordered_json all = nlohmann::ordered_json::object();
+  for (const auto& figure : figures) {
+    all[figure.name] = {{"median_ms", figure.median_ms},
+                        {"worst_ms", figure.max_ms},
+                        {"counters", figure.counters}};
+  }
+  report["repetitions"] = run.repetitions;
+  report["benchmarks"] = std::move(all);
+  out << report.dump(2) << '\n';
+}
+
+}  // namespace safecell
