@@ -6,8 +6,8 @@
 
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/human_walker.hpp"
-#include "safecell/sim/simulated_cell.hpp"
 
 namespace safecell {
 namespace {
@@ -16,11 +16,9 @@ const std::vector<double> kPose{0.4, 0.5, 0.6, 0.3, 0.8, 0.2};
 
 // The default cell's first camera alone, with sensor noise sigma 2.
 SimulatedCell first_camera() {
-  const CellModel model = load_cell_model(default_cell());
-  const auto& size = model.config.size_m;
-  return SimulatedCell(*model.robot, {model.cameras.front()},
-                       Eigen::Vector3d(size[0], size[1], size[2]), model.obstacles,
-                       SensorSettings{2.0, 0.0, 30.0, 5});
+  CellModel model = load_cell_model(default_cell());
+  model.cameras.erase(model.cameras.begin() + 1, model.cameras.end());
+  return simulate_cell(model, SensorSettings{2.0, 0.0, 30.0, 5});
 }
 
 class CameraHealth : public ::testing::Test {

@@ -8,7 +8,7 @@
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
 #include "safecell/reference/median_image.hpp"
-#include "safecell/sim/simulated_cell.hpp"
+#include "safecell/sim/cell_simulation.hpp"
 
 namespace safecell {
 namespace {
@@ -42,10 +42,8 @@ TEST(ReferenceConfigurations, PrefersConfigurationsThatShareNoPixels) {
 // The paper's Figure 7: the median of frames with the robot in chosen configurations shows the
 // empty cell wherever the robot stands in fewer than half of them.
 TEST(ReferenceConfigurations, TheMedianRemovesTheRobotOnTheSimulatedCell) {
-  const CellModel model = load_cell_model(default_cell());
-  const auto& size = model.config.size_m;
-  SimulatedCell sim(*model.robot, model.cameras, Eigen::Vector3d(size[0], size[1], size[2]),
-                    model.obstacles, SensorSettings{0.0, 0.0, 30.0, 1});
+  SimulatedCell sim =
+      simulate_cell(load_cell_model(default_cell()), SensorSettings{0.0, 0.0, 30.0, 1});
   // Candidates: the base joint at 12 angles with the arm leaning out, and at 12 with it upright.
   std::vector<std::vector<double>> candidates;
   for (int k = 0; k < 24; ++k) {

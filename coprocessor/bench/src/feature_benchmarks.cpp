@@ -18,14 +18,14 @@
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/features/noise_bits.hpp"
 #include "safecell/features/noise_cut.hpp"
-#include "safecell/sim/simulated_cell.hpp"
+#include "safecell/sim/cell_simulation.hpp"
 
 namespace safecell {
 namespace {
 
 constexpr int kStillFrames = 8;  // per camera, to choose the noise bits
-const FeatureWeights kWeights{.average = 2, .variance = 1, .span = 1, .edge_count = 1};
-constexpr int kThreshold = 24;
+constexpr FeatureWeights kWeights = kDefaultFeatureWeights;
+constexpr int kThreshold = kDefaultBlockedThreshold;
 
 struct CameraSetUp {
   FeatureGrid grid;
@@ -37,9 +37,7 @@ struct CameraSetUp {
 
 std::vector<CameraSetUp> render_set_up() {
   const CellModel model = load_cell_model(default_cell());
-  const auto& size = model.config.size_m;
-  SimulatedCell sim(*model.robot, model.cameras, Eigen::Vector3d(size[0], size[1], size[2]),
-                    model.obstacles, SensorSettings{});
+  SimulatedCell sim = simulate_cell(model, SensorSettings{});
   const std::vector<double> q{0.6, 0.3, 0.8, 0.0, 0.5, 0.0};
   HumanPose human;
   human.position_m = Eigen::Vector2d(1.0, -0.8);

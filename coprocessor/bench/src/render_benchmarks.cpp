@@ -7,21 +7,14 @@
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/human_walker.hpp"
-#include "safecell/sim/simulated_cell.hpp"
 
 namespace safecell {
 namespace {
 
-SimulatedCell default_simulated_cell() {
-  const CellModel model = load_cell_model(default_cell());
-  const auto& size = model.config.size_m;
-  return SimulatedCell(*model.robot, model.cameras, Eigen::Vector3d(size[0], size[1], size[2]),
-                       model.obstacles, SensorSettings{});
-}
-
 void render_four_default_cameras(benchmark::State& state) {
-  SimulatedCell sim = default_simulated_cell();
+  SimulatedCell sim = simulate_cell(load_cell_model(default_cell()), SensorSettings{});
   const HumanWalker walker({{1.8, -1.8}, {0.8, -0.6}, {1.8, 1.0}});
   std::uint64_t frame = 0;
   while (state.KeepRunning()) {

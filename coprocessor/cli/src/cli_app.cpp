@@ -6,6 +6,7 @@
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
+#include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/files/atomic_write.hpp"
 
@@ -57,6 +58,29 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                            "Show the robot's visual geometry (meshes) instead of its collision "
                            "geometry");
   render_command->callback([&] { action = [&] { run_sim_render(render, out); }; });
+
+  CLI::App* images = app.add_subcommand("images", "The image pipeline, as pictures");
+  images->require_subcommand(1);
+  ImagesShowOptions show;
+  CLI::App* show_command = images->add_subcommand(
+      "show",
+      "Write, per camera of the simulated cell, the frame, its five feature images, the reference "
+      "image and the blocked feature cells over the frame (PNG)");
+  show_command->add_option("--cell", show.cell_path,
+                           "Cell file (YAML); without it the built-in default cell");
+  show_command->add_option("--q", show.q_deg, "Joint values of the shown frame in degrees")
+      ->capture_default_str();
+  show_command->add_option("--human", show.humans, "A human at x,y[,heading_deg]; repeat for more")
+      ->capture_default_str();
+  show_command->add_option("--out", show.out_dir, "Folder for the PNG files")->required();
+  show_command
+      ->add_option("--seed", show.seed, "Seed of the noise and the candidate configurations")
+      ->capture_default_str();
+  show_command
+      ->add_option("--reference-frames", show.reference_frames,
+                   "Frames in the median reference image (the paper: 9)")
+      ->capture_default_str();
+  show_command->callback([&] { action = [&] { run_images_show(show, out); }; });
 
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(

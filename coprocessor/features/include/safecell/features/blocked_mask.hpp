@@ -23,6 +23,12 @@ struct FeatureWeights {
   [[nodiscard]] int of(Feature feature) const;
 };
 
+// Defaults tuned on the simulated default cell (sensor noise sigma 2): a walking human blocks
+// hundreds of cells over the four cameras, a new frame of the empty scene none (the benchmark's
+// blocked_cells counters show both). A cell file will override them.
+inline constexpr FeatureWeights kDefaultFeatureWeights{2, 1, 1, 0, 1};
+inline constexpr int kDefaultBlockedThreshold = 24;
+
 // The distance per cell: CV_32SC1, grid.rows() x grid.columns(). Throws std::invalid_argument
 // naming the parameter and its value for a weight outside 0..kMaxFeatureWeight, all weights 0,
 // feature images on different grids, or a plane that is not CV_8UC1 of the grid's size.
