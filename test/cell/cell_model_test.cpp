@@ -81,6 +81,8 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   EXPECT_EQ(model.feature_grid.cell_height_px(), 9);
   ASSERT_EQ(model.obstacles.size(), 1u);
   EXPECT_EQ(model.camera_threshold, 2);
+  EXPECT_EQ(model.feature_weights.average, 2);
+  EXPECT_EQ(model.blocked_threshold, 24);
 }
 
 TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
@@ -116,6 +118,20 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) +
                            "obstacles:\n  - {name: t, size_m: [1, -1, 1], centre_m: [0, 0, 0]}\n"),
             "cell.yaml:12: obstacles[0].size_m: value -1.000000, expected edge lengths above 0 m");
+  const CellModel tuned = load_cell_model(parse_cell_yaml(
+      std::string(kBuiltinCell) + "blocked_cells: {weights: {span: 3}, threshold: 10}\n",
+      "c.yaml"));
+  EXPECT_EQ(tuned.feature_weights.span, 3);
+  EXPECT_EQ(tuned.feature_weights.average, 0);
+  EXPECT_EQ(tuned.blocked_threshold, 10);
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "blocked_cells: {weights: {average: 0}}\n"),
+            "cell.yaml:11: blocked_cells.weights: expected whole numbers 0 to 255, at least one "
+            "above 0");
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "blocked_cells: {threshold: -1}\n"),
+            "cell.yaml:11: blocked_cells.threshold: value -1, expected 0 or more");
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "blocked_cells: {weights: {colour: 1}}\n"),
+            "cell.yaml:11: blocked_cells.weights.colour: unknown field (expected one of: average, "
+            "variance, span, contrast, edge_count)");
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "size_m: [4, 0, 3]\n"),
             "cell.yaml:11: size_m: value 0.000000, expected inside dimensions above 0 m");
 }

@@ -202,7 +202,7 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
   refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
-                            "feature_grid", "camera_threshold"});
+                            "feature_grid", "blocked_cells", "camera_threshold"});
 
   CellConfig cell;
   cell.source = source;
@@ -237,6 +237,26 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     cell.feature_grid.at = grid.at;
     cell.feature_grid.columns = integer_of(require(grid, "columns"));
     cell.feature_grid.rows = integer_of(require(grid, "rows"));
+  }
+  if (root["blocked_cells"]) {
+    const Field blocked = require(top, "blocked_cells");
+    require_mapping(blocked);
+    refuse_unknown_keys(blocked, {"weights", "threshold"});
+    cell.blocked_cells.at = blocked.at;
+    if (blocked.node["weights"]) {
+      const Field weights = require(blocked, "weights");
+      require_mapping(weights);
+      refuse_unknown_keys(weights, {"average", "variance", "span", "contrast", "edge_count"});
+      std::array<int, 5> values{0, 0, 0, 0, 0};
+      const char* names[] = {"average", "variance", "span", "contrast", "edge_count"};
+      for (std::size_t f = 0; f < values.size(); ++f) {
+        if (weights.node[names[f]]) values[f] = integer_of(require(weights, names[f]));
+      }
+      cell.blocked_cells.weights = values;
+    }
+    if (blocked.node["threshold"]) {
+      cell.blocked_cells.threshold = integer_of(require(blocked, "threshold"));
+    }
   }
   if (root["camera_threshold"]) {
     const Field threshold = require(top, "camera_threshold");

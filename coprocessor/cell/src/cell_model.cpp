@@ -89,6 +89,28 @@ void settle_from_robot(CellModel& model) {
   }
 }
 
+void settle_blocked_cells(CellModel& model) {
+  const BlockedCellConfig& blocked = model.config.blocked_cells;
+  if (blocked.weights) {
+    const auto& w = *blocked.weights;
+    model.feature_weights = FeatureWeights{w[0], w[1], w[2], w[3], w[4]};
+    const bool in_range = std::all_of(
+        w.begin(), w.end(), [](int weight) { return weight >= 0 && weight <= kMaxFeatureWeight; });
+    if (!in_range || std::all_of(w.begin(), w.end(), [](int weight) { return weight == 0; })) {
+      throw_cell_error(blocked.at, "blocked_cells.weights",
+                       "expected whole numbers 0 to " + std::to_string(kMaxFeatureWeight) +
+                           ", at least one above 0");
+    }
+  }
+  if (blocked.threshold) {
+    model.blocked_threshold = *blocked.threshold;
+    if (model.blocked_threshold < 0) {
+      throw_cell_error(blocked.at, "blocked_cells.threshold",
+                       "value " + std::to_string(model.blocked_threshold) + ", expected 0 or more");
+    }
+  }
+}
+
 void settle_scene(CellModel& model) {
   const CellConfig& cell = model.config;
   for (const double size : cell.size_m) {
@@ -97,6 +119,7 @@ void settle_scene(CellModel& model) {
                        "value " + std::to_string(size) + ", expected inside dimensions above 0 m");
     }
   }
+  settle_blocked_cells(model);
   model.cameras = cell_cameras(cell);
   model.feature_grid = cell_feature_grid(cell, model.cameras);
   model.obstacles = cell_obstacles(cell);
@@ -125,7 +148,9 @@ void settle_joints_without_robot(const CellConfig& cell) {
 }  // namespace
 
 CellModel load_cell_model(CellConfig config) {
-  CellModel model{std::move(config), std::nullopt, std::nullopt, {}, {}, {}, 1};
+  CellModel model{
+      std::move(config),       std::nullopt, std::nullopt, {}, {}, {}, 1, kDefaultFeatureWeights,
+      kDefaultBlockedThreshold};
   if (model.config.robot) {
     model.robot = load_robot(*model.config.robot);
     settle_from_robot(model);

@@ -109,7 +109,7 @@ void run_images_show(const ImagesShowOptions& options, std::ostream& out) {
     const FeatureImages current = extractor.extract(frames[c]);
     const FeatureImages reference = extractor.extract(references[c]);
     const cv::Mat blocked =
-        blocked_mask(current, reference, kDefaultFeatureWeights, kDefaultBlockedThreshold);
+        blocked_mask(current, reference, model.feature_weights, model.blocked_threshold);
     write_png(directory / (name + "_frame.png"), frames[c]);
     write_png(directory / (name + "_features.png"), feature_sheet(current));
     write_png(directory / (name + "_reference.png"), references[c]);

@@ -76,6 +76,14 @@ struct FeatureGridConfig {
   SourceLine at;
 };
 
+// How a feature cell counts as blocked: weighted feature distance to the reference above the
+// threshold. Unset values take the defaults of the features module.
+struct BlockedCellConfig {
+  std::optional<std::array<int, 5>> weights;  // average, variance, span, contrast, edge_count
+  std::optional<int> threshold;
+  SourceLine at;
+};
+
 struct CellConfig {
   std::string name;
   std::string source;
@@ -91,6 +99,7 @@ struct CellConfig {
   SourceLine cameras_at;
   std::vector<BoxObstacleConfig> obstacles;
   FeatureGridConfig feature_grid;
+  BlockedCellConfig blocked_cells;
   // A configuration is critical when at least this many cameras see it blocked (paper §4.4).
   // Unset: 2, or 1 with a single camera.
   std::optional<int> camera_threshold;

@@ -8,6 +8,7 @@
 #include "safecell/camera/feature_grid.hpp"
 #include "safecell/camera/pinhole_camera.hpp"
 #include "safecell/cell/cell_config.hpp"
+#include "safecell/features/blocked_mask.hpp"
 #include "safecell/robot/lever_arms.hpp"
 #include "safecell/robot/robot_model.hpp"
 
@@ -21,6 +22,8 @@ struct CellModel {
   FeatureGrid feature_grid;
   std::vector<PlacedShape> obstacles;
   int camera_threshold = 1;  // settled: the cell's value or the default
+  FeatureWeights feature_weights = kDefaultFeatureWeights;
+  int blocked_threshold = kDefaultBlockedThreshold;
 };
 
 // Throws CellError naming the file, line and field: an unreadable robot, joints that do not match
