@@ -80,9 +80,11 @@ PlacedShape tool_shape_of(const Field& field) {
     const Field box = require(field, "box");
     require_mapping(box);
     refuse_unknown_keys(box, {"size_m"});
-    const auto size = numbers_of(require(box, "size_m"), 3, "[x, y, z] edge lengths in metres");
-    for (std::size_t i = 0; i < 3; ++i) positive_of(element(require(box, "size_m"), i));
-    placed.shape = Box{{size[0], size[1], size[2]}};
+    const Field size = require(box, "size_m");
+    // Checks the shape of the list first, then each edge on its own line of the message.
+    static_cast<void>(numbers_of(size, 3, "[x, y, z] edge lengths in metres"));
+    placed.shape = Box{{positive_of(element(size, 0)), positive_of(element(size, 1)),
+                        positive_of(element(size, 2))}};
   } else if (field.node["sphere"]) {
     const Field sphere = require(field, "sphere");
     require_mapping(sphere);
@@ -131,8 +133,7 @@ RobotConfig robot_of(const Field& field, const std::filesystem::path& base_direc
     refuse_unknown_keys(tool, {"frame", "point_m", "shapes"});
     if (tool.node["frame"]) robot.tool_frame = text_of(require(tool, "frame"));
     if (tool.node["point_m"]) {
-      const auto point = numbers_of(require(tool, "point_m"), 3, "[x, y, z] in metres");
-      robot.tool_point_m = {point[0], point[1], point[2]};
+      robot.tool_point_m = triple_of(require(tool, "point_m"), "[x, y, z] in metres");
     }
     if (tool.node["shapes"]) {
       robot.tool_shapes = list_of<PlacedShape>(require(tool, "shapes"), tool_shape_of);
