@@ -1,0 +1,52 @@
+#pragma once
+// A set of C-space cells as a bitset in cell index order (joint 0 fastest): the per-camera
+// suspicious sets, the critical and forbidden maps. A row of cells along joint 0 is a run of
+// consecutive bits, so a box of cells is set with a few word operations per row.
+
+#include <cstdint>
+#include <vector>
+
+#include "safecell/cspace/cspace_grid.hpp"
+
+namespace safecell {
+
+class CellSet {
+ public:
+  CellSet() = default;
+  explicit CellSet(std::uint32_t cell_count);
+
+  [[nodiscard]] std::uint32_t cell_count() const { return cell_count_; }
+
+  [[nodiscard]] bool test(CellIndex cell) const {
+    return ((words_[cell >> 6] >> (cell & 63)) & 1U) != 0;
+  }
+  void set(CellIndex cell) { words_[cell >> 6] |= std::uint64_t{1} << (cell & 63); }
+  void reset(CellIndex cell) { words_[cell >> 6] &= ~(std::uint64_t{1} << (cell & 63)); }
+  // Sets cells begin..end-1 (precondition: begin <= end <= cell_count()).
+  void set_range(CellIndex begin, CellIndex end);
+  // Whether every cell begin..end-1 is set.
+  [[nodiscard]] bool all_in_range(CellIndex begin, CellIndex end) const;
+  // Clears cells begin..end-1.
+  void reset_range(CellIndex begin, CellIndex end);
+  void clear();
+  void fill();
+
+  [[nodiscard]] std::size_t count() const;
+  [[nodiscard]] bool any() const;
+  // The first set cell at or after `from`; cell_count() when none.
+  [[nodiscard]] CellIndex next_set(CellIndex from) const;
+
+  CellSet& operator|=(const CellSet& other);
+  CellSet& operator&=(const CellSet& other);
+
+  [[nodiscard]] const std::vector<std::uint64_t>& words() const { return words_; }
+  [[nodiscard]] std::vector<std::uint64_t>& words() { return words_; }
+
+  friend bool operator==(const CellSet&, const CellSet&) = default;
+
+ private:
+  std::uint32_t cell_count_ = 0;
+  std::vector<std::uint64_t> words_;
+};
+
+}  // namespace safecell

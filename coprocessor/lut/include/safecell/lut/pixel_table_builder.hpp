@@ -1,0 +1,35 @@
+#pragma once
+// Builds LUT-2 from LUT-1 (paper §4.1): for every feature cell, the C-space cells whose
+// silhouette holds it, as boxes. The cells of a band of feature rows are gathered as one bitset
+// per pixel (the band is sized to a memory budget, so a finer grid streams instead of holding
+// everything), then each pixel's bitset is cut into boxes greedily: a box grows from its lowest
+// cell along joint 0, then along each further axis while the whole new layer is in the set.
+// Boxes may overlap (their union is the set exactly), which keeps them few.
+
+#include <cstddef>
+
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/lut/cell_to_pixels_table.hpp"
+#include "safecell/lut/parallel_chunks.hpp"
+#include "safecell/lut/pixel_to_cells_table.hpp"
+
+namespace safecell {
+
+struct PixelTableBuild {
+  unsigned threads = 0;                          // 0: one per hardware thread
+  std::size_t memory_budget_bytes = 256u << 20;  // for the per-pixel bitsets of one band
+};
+
+// Throws std::invalid_argument when the table is not of the grid, or an axis has more cells
+// than a box extent can hold (65535).
+[[nodiscard]] PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table,
+                                                           const CspaceGrid& grid,
+                                                           const PixelTableBuild& build = {},
+                                                           const ProgressCallback& progress = {});
+
+// The boxes of one set of cells, appended to `box_words` (the coding of PixelToCellsTable).
+// Returns the number of boxes. Exposed for tests.
+std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
+                         std::vector<std::uint16_t>& box_words);
+
+}  // namespace safecell

@@ -1,0 +1,170 @@
+#include "safecell/lut/feature_mask.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+
+namespace safecell {
+namespace {
+
+constexpr int kMaxSide = 65535;
+
+// Bits first..last (0..63, inclusive) of a word.
+std::uint64_t bit_span(int first, int last) {
+  const std::uint64_t upto_last = last == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (last + 1)) - 1;
+  return upto_last & ~((std::uint64_t{1} << first) - 1);
+}
+
+}  // namespace
+
+FeatureMask::FeatureMask(int columns, int rows)
+    : columns_(columns), rows_(rows), words_per_row_((columns + 63) / 64) {
+  if (columns < 1 || rows < 1 || columns > kMaxSide || rows > kMaxSide) {
+    throw std::invalid_argument("feature mask size must be 1..65535 cells each way, got " +
+                                std::to_string(columns) + " x " + std::to_string(rows));
+  }
+  words_.assign(static_cast<std::size_t>(rows) * static_cast<std::size_t>(words_per_row_), 0);
+}
+
+FeatureMask FeatureMask::from_image(const cv::Mat& mask) {
+  if (mask.empty() || mask.type() != CV_8UC1) {
+    throw std::invalid_argument("a feature mask image must be a non-empty CV_8UC1 image");
+  }
+  FeatureMask result(mask.cols, mask.rows);
+  for (int row = 0; row < mask.rows; ++row) {
+    const auto* pixels = mask.ptr<std::uint8_t>(row);
+    for (int column = 0; column < mask.cols; ++column) {
+      if (pixels[column] != 0) result.set(column, row);
+    }
+  }
+  return result;
+}
+
+void FeatureMask::set_rect(const FeatureRect& rect) {
+  const int col1 = std::min<int>(rect.col1, columns_ - 1);
+  const int row1 = std::min<int>(rect.row1, rows_ - 1);
+  if (rect.col0 > col1 || rect.row0 > row1) return;
+  const int first_word = rect.col0 >> 6;
+  const int last_word = col1 >> 6;
+  for (int row = rect.row0; row <= row1; ++row) {
+    std::uint64_t* words = row_words(row);
+    for (int word = first_word; word <= last_word; ++word) {
+      const int first = word == first_word ? rect.col0 & 63 : 0;
+      const int last = word == last_word ? col1 & 63 : 63;
+      words[word] |= bit_span(first, last);
+    }
+  }
+}
+
+void FeatureMask::clear() { std::fill(words_.begin(), words_.end(), 0); }
+
+std::size_t FeatureMask::count() const {
+  std::size_t total = 0;
+  for (const std::uint64_t word : words_) total += static_cast<std::size_t>(std::popcount(word));
+  return total;
+}
+
+bool FeatureMask::any() const {
+  return std::any_of(words_.begin(), words_.end(), [](std::uint64_t word) { return word != 0; });
+}
+
+bool FeatureMask::intersects(const FeatureMask& other) const {
+  check_same_shape(other);
+  for (std::size_t i = 0; i < words_.size(); ++i) {
+    if ((words_[i] & other.words_[i]) != 0) return true;
+  }
+  return false;
+}
+
+FeatureMask& FeatureMask::operator|=(const FeatureMask& other) {
+  check_same_shape(other);
+  for (std::size_t i = 0; i < words_.size(); ++i) words_[i] |= other.words_[i];
+  return *this;
+}
+
+FeatureMask& FeatureMask::operator&=(const FeatureMask& other) {
+  check_same_shape(other);
+  for (std::size_t i = 0; i < words_.size(); ++i) words_[i] &= other.words_[i];
+  return *this;
+}
+
+FeatureMask& FeatureMask::subtract(const FeatureMask& other) {
+  check_same_shape(other);
+  for (std::size_t i = 0; i < words_.size(); ++i) words_[i] &= ~other.words_[i];
+  return *this;
+}
+
+cv::Mat FeatureMask::to_image() const {
+  cv::Mat image(rows_, columns_, CV_8UC1, cv::Scalar(0));
+  for (int row = 0; row < rows_; ++row) {
+    auto* pixels = image.ptr<std::uint8_t>(row);
+    for (int column = 0; column < columns_; ++column) {
+      if (test(column, row)) pixels[column] = 255;
+    }
+  }
+  return image;
+}
+
+std::vector<FeatureRect> FeatureMask::rectangles() const {
+  std::vector<FeatureRect> done;
+  std::vector<FeatureRect> open;  // rectangles that reach the previous row
+  std::vector<FeatureRect> next;
+  for (int row = 0; row < rows_; ++row) {
+    next.clear();
+    const std::uint64_t* words = row_words(row);
+    // Runs of set bits, found a word at a time; a run may continue into the next word.
+    int run_start = -1;
+    const auto close_run = [&](int end) {
+      const auto col0 = static_cast<std::uint16_t>(run_start);
+      const auto col1 = static_cast<std::uint16_t>(end - 1);
+      const auto above = std::find_if(open.begin(), open.end(), [&](const FeatureRect& rect) {
+        return rect.col0 == col0 && rect.col1 == col1;
+      });
+      if (above != open.end()) {
+        FeatureRect grown = *above;
+        grown.row1 = static_cast<std::uint16_t>(row);
+        next.push_back(grown);
+        open.erase(above);
+      } else {
+        const auto r = static_cast<std::uint16_t>(row);
+        next.push_back(FeatureRect{col0, r, col1, r});
+      }
+      run_start = -1;
+    };
+    for (int word = 0; word < words_per_row_; ++word) {
+      std::uint64_t bits = words[word];
+      int offset = 0;  // bits below `offset` of this word are handled
+      while (offset < 64) {
+        if (run_start < 0) {
+          if (bits == 0) break;
+          const int zeros = std::countr_zero(bits);
+          run_start = word * 64 + offset + zeros;
+          bits >>= zeros;
+          offset += zeros;
+        }
+        const int ones = std::countr_one(bits);
+        offset += ones;
+        if (offset >= 64) break;  // the run may go on in the next word
+        bits >>= ones;
+        close_run(word * 64 + offset);
+      }
+    }
+    if (run_start >= 0) close_run(std::min(columns_, words_per_row_ * 64));
+    done.insert(done.end(), open.begin(), open.end());
+    open.swap(next);
+  }
+  done.insert(done.end(), open.begin(), open.end());
+  return done;
+}
+
+void FeatureMask::check_same_shape(const FeatureMask& other) const {
+  if (other.columns_ != columns_ || other.rows_ != rows_) {
+    throw std::invalid_argument("feature masks of different sizes: " + std::to_string(columns_) +
+                                " x " + std::to_string(rows_) + " and " +
+                                std::to_string(other.columns_) + " x " +
+                                std::to_string(other.rows_));
+  }
+}
+
+}  // namespace safecell
