@@ -12,15 +12,15 @@ namespace {
 
 using test::ScriptedSource;
 
-const cv::Size kSize(176, 144);
+cv::Size frame_size() { return {176, 144}; }
 
 // A textured empty cell: smooth random blobs around gray 128.
 cv::Mat reference_image() {
-  cv::Mat coarse(kSize.height / 8, kSize.width / 8, CV_8UC1);
+  cv::Mat coarse(frame_size().height / 8, frame_size().width / 8, CV_8UC1);
   cv::RNG rng(7);
   rng.fill(coarse, cv::RNG::UNIFORM, 60, 196);
   cv::Mat image;
-  cv::resize(coarse, image, kSize, 0, 0, cv::INTER_CUBIC);
+  cv::resize(coarse, image, frame_size(), 0, 0, cv::INTER_CUBIC);
   return image;
 }
 
@@ -44,7 +44,7 @@ class CameraViewsTest : public ::testing::Test {
     for (const std::string name : {"left", "mid", "right"}) {
       const bool faulty = name == "mid";
       sources.push_back(std::make_unique<ScriptedSource>(
-          name, kSize,
+          name, frame_size(),
           [this, faulty](int grab) {
             const cv::Mat frame = live_frame(reference_, grab);
             return faulty && (grab == 2 || grab == 3) ? cv::Mat(frame * 0.02) : frame;

@@ -12,14 +12,14 @@ namespace {
 
 using test::ScriptedSource;
 
-const cv::Size kSize(64, 48);
+cv::Size frame_size() { return {64, 48}; }
 
-cv::Mat gray(int level, cv::Size size = kSize) { return {size, CV_8UC1, cv::Scalar(level)}; }
+cv::Mat gray(int level, cv::Size size = frame_size()) { return {size, CV_8UC1, cv::Scalar(level)}; }
 
 std::unique_ptr<CameraSource> flat_source(const std::string& name, int level,
                                           std::vector<std::string>* calls = nullptr) {
   return std::make_unique<ScriptedSource>(
-      name, kSize, [level](int) { return gray(level); }, calls);
+      name, frame_size(), [level](int) { return gray(level); }, calls);
 }
 
 FrameSetAcquirer acquirer_of(std::vector<std::unique_ptr<CameraSource>> sources) {
@@ -54,7 +54,7 @@ TEST(FrameSetAcquirer, CountsFramesPerCameraAndSkipsTheCountWhenNoFrameCame) {
   FrameSetAcquirer acquirer = acquirer_of(
       list(flat_source("cam0", 10),
            std::make_unique<ScriptedSource>(
-               "cam1", kSize, [](int) { return gray(20); }, nullptr,
+               "cam1", frame_size(), [](int) { return gray(20); }, nullptr,
                [](int grab) { return grab == 1 ? CameraFault::kStopped : CameraFault::kNone; })));
   const std::vector<std::vector<std::uint64_t>> expected{{1, 1}, {2, 1}, {3, 2}, {4, 3}};
   for (std::size_t cycle = 0; cycle < expected.size(); ++cycle) {
@@ -71,7 +71,7 @@ TEST(FrameSetAcquirer, AMissingCameraIsUnknownByNameAndTheOthersStayKnown) {
   FrameSetAcquirer acquirer =
       acquirer_of(list(flat_source("left", 10, &calls),
                        std::make_unique<ScriptedSource>(
-                           "gone", kSize, [](int) { return gray(20); }, &calls,
+                           "gone", frame_size(), [](int) { return gray(20); }, &calls,
                            [](int) { return CameraFault::kUnavailable; }),
                        flat_source("right", 30, &calls)));
   const FrameSet set = acquirer.acquire();
@@ -92,7 +92,7 @@ TEST(FrameSetAcquirer, AMissingCameraIsUnknownByNameAndTheOthersStayKnown) {
 
 TEST(FrameSetAcquirer, AWrongSizedFrameMakesThatViewUnknownNamingCameraAndSizes) {
   FrameSetAcquirer acquirer = acquirer_of(
-      list(flat_source("cam0", 10), std::make_unique<ScriptedSource>("cam1", kSize, [](int) {
+      list(flat_source("cam0", 10), std::make_unique<ScriptedSource>("cam1", frame_size(), [](int) {
              return gray(20, {32, 24});
            })));
   const FrameSet set = acquirer.acquire();
@@ -108,11 +108,13 @@ TEST(FrameSetAcquirer, AWrongSizedFrameMakesThatViewUnknownNamingCameraAndSizes)
 }
 
 TEST(FrameSetAcquirer, ColourBecomesGrayAndOtherDepthsAreWrong) {
-  FrameSetAcquirer acquirer = acquirer_of(list(
-      std::make_unique<ScriptedSource>(
-          "colour", kSize, [](int) { return cv::Mat(kSize, CV_8UC3, cv::Scalar(50, 50, 50)); }),
-      std::make_unique<ScriptedSource>(
-          "deep", kSize, [](int) { return cv::Mat(kSize, CV_16UC1, cv::Scalar(1000)); })));
+  FrameSetAcquirer acquirer = acquirer_of(
+      list(std::make_unique<ScriptedSource>(
+               "colour", frame_size(),
+               [](int) { return cv::Mat(frame_size(), CV_8UC3, cv::Scalar(50, 50, 50)); }),
+           std::make_unique<ScriptedSource>("deep", frame_size(), [](int) {
+             return cv::Mat(frame_size(), CV_16UC1, cv::Scalar(1000));
+           })));
   const FrameSet set = acquirer.acquire();
   ASSERT_TRUE(set.frames[0].known()) << set.frames[0].view.detail;
   EXPECT_EQ(set.frames[0].image.type(), CV_8UC1);
@@ -123,7 +125,8 @@ TEST(FrameSetAcquirer, ColourBecomesGrayAndOtherDepthsAreWrong) {
 }
 
 TEST(FrameSetAcquirer, StampsWithTheBackendTimeOrElseTheGrabClock) {
-  auto timed = std::make_unique<ScriptedSource>("timed", kSize, [](int) { return gray(10); });
+  auto timed =
+      std::make_unique<ScriptedSource>("timed", frame_size(), [](int) { return gray(10); });
   timed->set_exposure_s(12.5);
   FrameSetAcquirer acquirer = acquirer_of(list(std::move(timed), flat_source("untimed", 10)));
   const auto now_s = [] {

@@ -15,9 +15,9 @@ namespace {
 
 using test::ScratchFolder;
 
-const cv::Size kSize(64, 48);
+cv::Size frame_size() { return {64, 48}; }
 
-void write_image(const std::filesystem::path& path, int level, cv::Size size = kSize,
+void write_image(const std::filesystem::path& path, int level, cv::Size size = frame_size(),
                  int type = CV_8UC1) {
   ASSERT_TRUE(cv::imwrite(path.string(), cv::Mat(size, type, cv::Scalar::all(level)))) << path;
 }
@@ -28,14 +28,14 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 
 FrameSetAcquirer over(const std::filesystem::path& folder) {
   std::vector<std::unique_ptr<CameraSource>> sources;
-  sources.push_back(std::make_unique<ImageFolderSource>("cam0", kSize, folder));
+  sources.push_back(std::make_unique<ImageFolderSource>("cam0", frame_size(), folder));
   return FrameSetAcquirer(std::move(sources));
 }
 
 // The message of the AcquisitionError the folder's source throws, or "" when none.
 std::string error_of(const std::filesystem::path& folder) {
   try {
-    const ImageFolderSource source("cam0", kSize, folder);
+    const ImageFolderSource source("cam0", frame_size(), folder);
   } catch (const AcquisitionError& error) {
     return error.what();
   }
@@ -99,7 +99,8 @@ TEST(ImageFolderSource, MalformedCsvRowsAreNamedByFileLineAndValue) {
       {"file,time_s\na.png,1\na.png,2\nb.png,3\n", csv + ":3: file: 'a.png' is named twice"},
       {"file,time_s\na.png,1\n", csv + ": file: no row for image 'b.png'"},
       {"file,time_s\na.png,1\nb.png,2\nc.png,3\n", csv + ":4: file: 'c.png' is not a PNG or PGM"},
-      {"file,time_s\na.png,2\nb.png,2\n", csv + ":3: time_s: 2.000000 of 'b.png' is not after"},
+      {"file,time_s\na.png,2\nb.png,2\n",
+       csv + ":3: time_s: 2 of 'b.png' is not after 2 of line 2"},
   };
   for (const auto& [text, message] : cases) {
     write_text(csv, text);
@@ -136,8 +137,8 @@ TEST(ImageFolderSource, TruncatedAndGarbageFilesAreCorruptFramesNamingTheFile) {
 TEST(ImageFolderSource, ImagesOfTheWrongSizeOrDepthAreTheWrongFormatNamingTheFile) {
   const ScratchFolder folder;
   write_image(folder / "1.png", 10, {32, 24});
-  write_image(folder / "2.png", 1000, kSize, CV_16UC1);
-  write_image(folder / "3.png", 60, kSize, CV_8UC3);
+  write_image(folder / "2.png", 1000, frame_size(), CV_16UC1);
+  write_image(folder / "3.png", 60, frame_size(), CV_8UC3);
   FrameSetAcquirer acquirer = over(folder.path());
   const CameraFrame small = acquirer.acquire().frames.at(0);
   EXPECT_EQ(small.view.fault, CameraFault::kWrongFormat);
@@ -155,7 +156,7 @@ TEST(ImageFolderSource, ImagesOfTheWrongSizeOrDepthAreTheWrongFormatNamingTheFil
 TEST(ImageFolderSource, AMissingFolderIsUnavailableByName) {
   const ScratchFolder folder;
   const auto missing = folder / "no-such-folder";
-  const ImageFolderSource source("cam0", kSize, missing);
+  const ImageFolderSource source("cam0", frame_size(), missing);
   EXPECT_FALSE(source.opened());
   const CameraFrame got = over(missing).acquire().frames.at(0);
   EXPECT_EQ(got.view.fault, CameraFault::kUnavailable);

@@ -10,7 +10,7 @@
 namespace safecell {
 namespace {
 
-const cv::Size kSize(64, 48);
+cv::Size frame_size() { return {64, 48}; }
 constexpr int kFrames = 5;
 constexpr double kFps = 10.0;
 
@@ -18,15 +18,15 @@ int level_of(int frame) { return 30 + 40 * frame; }
 
 // A small Motion-JPEG AVI whose frame n is flat gray at level_of(n).
 void write_video(const std::filesystem::path& path) {
-  cv::VideoWriter writer(path.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), kFps, kSize,
-                         false);
+  cv::VideoWriter writer(path.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), kFps,
+                         frame_size(), false);
   ASSERT_TRUE(writer.isOpened()) << "cannot write " << path;
   for (int frame = 0; frame < kFrames; ++frame) {
-    writer.write(cv::Mat(kSize, CV_8UC1, cv::Scalar(level_of(frame))));
+    writer.write(cv::Mat(frame_size(), CV_8UC1, cv::Scalar(level_of(frame))));
   }
 }
 
-FrameSetAcquirer single(const std::string& spec, cv::Size size = kSize) {
+FrameSetAcquirer single(const std::string& spec, cv::Size size = frame_size()) {
   std::vector<std::unique_ptr<CameraSource>> sources;
   sources.push_back(std::make_unique<VideoCaptureSource>("cam0", size, spec));
   return FrameSetAcquirer(std::move(sources));
@@ -41,7 +41,7 @@ TEST(VideoCaptureSource, PlaysAVideoFileWithItsMediaTimesThenStops) {
     const CameraFrame got = acquirer.acquire().frames.at(0);
     ASSERT_TRUE(got.known()) << got.view.detail;
     EXPECT_EQ(got.image.type(), CV_8UC1);
-    EXPECT_EQ(got.image.size(), kSize);
+    EXPECT_EQ(got.image.size(), frame_size());
     EXPECT_NEAR(cv::mean(got.image)[0], level_of(frame), 3.0) << "frame " << frame;
     EXPECT_EQ(got.counter, static_cast<std::uint64_t>(frame + 1));
     EXPECT_EQ(got.stamp_source, StampSource::kBackend);
@@ -68,7 +68,7 @@ TEST(VideoCaptureSource, AVideoOfAnotherSizeIsTheWrongFormat) {
 TEST(VideoCaptureSource, AMissingFileOrDeviceIsUnavailableByName) {
   const test::ScratchFolder folder;
   const std::string missing = (folder / "no-such-video.avi").string();
-  const VideoCaptureSource source("cam0", kSize, missing);
+  const VideoCaptureSource source("cam0", frame_size(), missing);
   EXPECT_FALSE(source.opened());
   const CameraFrame file = single(missing).acquire().frames.at(0);
   EXPECT_EQ(file.view.fault, CameraFault::kUnavailable);
@@ -85,7 +85,7 @@ TEST(VideoCaptureSource, AMissingFileOrDeviceIsUnavailableByName) {
 }
 
 TEST(VideoCaptureSource, ABrokenGStreamerPipelineIsUnavailableByName) {
-  const VideoCaptureSource source("cam0", kSize, "safecellnosuchelement ! appsink");
+  const VideoCaptureSource source("cam0", frame_size(), "safecellnosuchelement ! appsink");
   EXPECT_FALSE(source.opened());
   EXPECT_NE(source.open_problem().find("cannot open GStreamer pipeline 'safecellnosuchelement"),
             std::string::npos)

@@ -9,11 +9,6 @@
 namespace safecell {
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& csv, int line, const std::string& field,
-                       const std::string& problem) {
-  throw AcquisitionError(csv.string() + ":" + std::to_string(line) + ": " + field + ": " + problem);
-}
-
 std::string without_carriage_return(std::string text) {
   if (!text.empty() && text.back() == '\r') text.pop_back();
   return text;
@@ -23,11 +18,11 @@ std::string without_carriage_return(std::string text) {
 
 std::map<std::string, FrameTime> read_frame_times_csv(const std::filesystem::path& csv) {
   std::ifstream in(csv);
-  if (!in) fail(csv, 0, "file", "cannot be read");
+  if (!in) throw_acquisition_error(csv, 0, "file", "cannot be read");
   std::string text;
   int line = 1;
   if (!std::getline(in, text) || without_carriage_return(text) != "file,time_s") {
-    fail(csv, line, "header", "expected 'file,time_s', got '" + text + "'");
+    throw_acquisition_error(csv, line, "header", "expected 'file,time_s', got '" + text + "'");
   }
   std::map<std::string, FrameTime> rows;
   while (std::getline(in, text)) {
@@ -36,21 +31,22 @@ std::map<std::string, FrameTime> read_frame_times_csv(const std::filesystem::pat
     if (text.empty()) continue;
     const std::size_t comma = text.find(',');
     if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
-      fail(csv, line, "row", "expected 'file,time_s', got '" + text + "'");
+      throw_acquisition_error(csv, line, "row", "expected 'file,time_s', got '" + text + "'");
     }
     const std::string file = text.substr(0, comma);
     const std::string time_text = text.substr(comma + 1);
-    if (file.empty()) fail(csv, line, "file", "empty file name");
+    if (file.empty()) throw_acquisition_error(csv, line, "file", "empty file name");
     double time_s = 0.0;
     const char* end = time_text.data() + time_text.size();
     const auto [stop, error] = std::from_chars(time_text.data(), end, time_s);
     if (time_text.empty() || error != std::errc() || stop != end || !std::isfinite(time_s)) {
-      fail(csv, line, "time_s", "'" + time_text + "' is not a number of seconds");
+      throw_acquisition_error(csv, line, "time_s",
+                              "'" + time_text + "' is not a number of seconds");
     }
     if (!rows.emplace(file, FrameTime{time_s, line}).second) {
-      fail(csv, line, "file",
-           "'" + file + "' is named twice (first on line " + std::to_string(rows.at(file).line) +
-               ")");
+      throw_acquisition_error(csv, line, "file",
+                              "'" + file + "' is named twice (first on line " +
+                                  std::to_string(rows.at(file).line) + ")");
     }
   }
   return rows;

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <chrono>
 #include <opencv2/imgcodecs.hpp>
+#include <set>
+#include <sstream>
 
 #include "frame_times_csv.hpp"
 #include "safecell/acquisition/acquisition_error.hpp"
@@ -52,32 +54,30 @@ ImageFolderSource::ImageFolderSource(std::string camera_name, cv::Size frame_siz
 }
 
 void ImageFolderSource::read_times_from_csv(const std::filesystem::path& csv) {
-  std::map<std::string, FrameTime> rows = read_frame_times_csv(csv);
+  const std::map<std::string, FrameTime> rows = read_frame_times_csv(csv);
+  std::set<std::string> images;
   const FrameTime* previous = nullptr;
-  std::string previous_file;
   for (const auto& file : files_) {
     const std::string file_name = file.filename().string();
     const auto row = rows.find(file_name);
     if (row == rows.end()) {
-      throw AcquisitionError(csv.string() + ": file: no row for image '" + file_name + "'");
+      throw_acquisition_error(csv, 0, "file", "no row for image '" + file_name + "'");
     }
     if (previous != nullptr && !(row->second.time_s > previous->time_s)) {
-      throw AcquisitionError(csv.string() + ":" + std::to_string(row->second.line) + ": time_s: " +
-                             std::to_string(row->second.time_s) + " of '" + file_name +
-                             "' is not after " + std::to_string(previous->time_s) + " of '" +
-                             previous_file + "' (line " + std::to_string(previous->line) + ")");
+      std::ostringstream problem;
+      problem << row->second.time_s << " of '" << file_name << "' is not after " << previous->time_s
+              << " of line " << previous->line;
+      throw_acquisition_error(csv, row->second.line, "time_s", problem.str());
     }
     times_s_.push_back(row->second.time_s);
+    images.insert(file_name);
     previous = &row->second;
-    previous_file = file_name;
   }
   for (const auto& [file_name, row] : rows) {
-    const bool listed = std::any_of(files_.begin(), files_.end(),
-                                    [&](const auto& file) { return file.filename() == file_name; });
-    if (!listed) {
-      throw AcquisitionError(csv.string() + ":" + std::to_string(row.line) + ": file: '" +
-                             file_name + "' is not a PNG or PGM file in '" + folder_.string() +
-                             "'");
+    if (images.count(file_name) == 0) {
+      throw_acquisition_error(
+          csv, row.line, "file",
+          "'" + file_name + "' is not a PNG or PGM file in '" + folder_.string() + "'");
     }
   }
 }

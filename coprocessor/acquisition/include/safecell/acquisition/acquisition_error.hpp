@@ -4,7 +4,9 @@
 // and the value where it can, as a CellError's does; the CLI prints it as it is. Faults of a
 // running camera are not exceptions: they are fault reports (camera_source.hpp).
 
+#include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace safecell {
 
@@ -12,5 +14,9 @@ class AcquisitionError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Throws "file:line: field: problem" ("file: field: problem" for line 0).
+[[noreturn]] void throw_acquisition_error(const std::filesystem::path& file, int line,
+                                          const std::string& field, const std::string& problem);
 
 }  // namespace safecell
