@@ -26,7 +26,8 @@ struct CameraFrame {
   // Frames this camera has delivered so far, this one included (1 for the first); a cycle in
   // which it delivered none keeps the last count.
   std::uint64_t counter = 0;
-  double exposure_s = 0.0;  // see stamp_source; 0 when no frame was grabbed
+  // See stamp_source. When the camera delivered no frame: the time of the attempt (kGrabClock).
+  double exposure_s = 0.0;
   StampSource stamp_source = StampSource::kGrabClock;
   HealthReport view;  // healthy(): the view is known; otherwise the cause, naming the camera
 

@@ -1,7 +1,7 @@
 #pragma once
 // A camera read through OpenCV's VideoCapture: a capture device, a video file, a GStreamer
 // pipeline or a network stream (RTSP, HTTP). The spec string decides which:
-//   "0", "2"                                  device index (V4L2 on Linux)
+//   "0", "2"                                  device index (V4L2 on Linux; up to 5 digits)
 //   "v4l2src device=/dev/video0 ! appsink"   GStreamer pipeline (it contains '!')
 //   "rtsp://10.0.0.5/stream1"                network stream (it contains "://")
 //   anything else                            video file
