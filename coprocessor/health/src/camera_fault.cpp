@@ -18,8 +18,20 @@ const char* to_string(CameraFault fault) {
       return "sudden lighting change";
     case CameraFault::kMoved:
       return "camera moved";
+    case CameraFault::kUnavailable:
+      return "camera unavailable";
+    case CameraFault::kStopped:
+      return "camera stopped delivering";
+    case CameraFault::kCorruptFrame:
+      return "corrupt frame";
   }
   return "unknown fault";
+}
+
+HealthReport camera_fault_report(const std::string& camera_name, CameraFault fault,
+                                 const std::string& detail) {
+  return HealthReport{fault,
+                      "camera '" + camera_name + "': " + to_string(fault) + " (" + detail + ")"};
 }
 
 }  // namespace safecell

@@ -48,8 +48,7 @@ CameraHealthMonitor::CameraHealthMonitor(std::string camera_name, const cv::Mat&
 }
 
 HealthReport CameraHealthMonitor::fault(CameraFault fault, const std::string& detail) const {
-  return HealthReport{fault,
-                      "camera '" + camera_name_ + "': " + to_string(fault) + " (" + detail + ")"};
+  return camera_fault_report(camera_name_, fault, detail);
 }
 
 cv::Point2d CameraHealthMonitor::shift_against_reference(const cv::Mat& frame) const {

@@ -13,6 +13,9 @@ enum class CameraFault {
   kFrozen,          // identical frames, or less noise than a live sensor shows
   kLightingChange,  // the scene's brightness jumped away from the reference's
   kMoved,           // the image no longer lines up with the reference
+  kUnavailable,     // the camera (device, file, folder, stream) could not be opened
+  kStopped,         // the camera was open but delivered no frame when asked
+  kCorruptFrame,    // the frame could not be decoded (a truncated or garbage image file)
 };
 
 const char* to_string(CameraFault fault);
@@ -23,5 +26,10 @@ struct HealthReport {
 
   bool healthy() const { return fault == CameraFault::kNone; }
 };
+
+// The report of `fault` on camera `camera_name`, its detail reading
+// "camera '<name>': <to_string(fault)> (<detail>)" so that every log line names the camera.
+HealthReport camera_fault_report(const std::string& camera_name, CameraFault fault,
+                                 const std::string& detail);
 
 }  // namespace safecell
