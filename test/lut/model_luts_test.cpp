@@ -2,51 +2,181 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <cstdlib>
-#include <iostream>
+#include <stdexcept>
 
-#include "safecell/cell/cell_grid.hpp"
-#include "safecell/cell/default_cell.hpp"
-#include "safecell/lut/robot_balls.hpp"
+#include "model_fixture.hpp"
+#include "safecell/geometry/tessellate.hpp"
+#include "safecell/lut/cell_table_builder.hpp"
+#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/lut/pixel_table_builder.hpp"
+#include "safecell/robot/kinematics.hpp"
+#include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim/ground_truth.hpp"
+#include "safecell/test/property.hpp"
 
 namespace safecell {
 namespace {
 
-TEST(ModelLuts, BallCounts) {
-  const CellModel cell = load_cell_model(default_cell());
-  for (double r : {0.06, 0.1, 0.15}) {
-    const auto b = cover_with_balls(*cell.robot, r);
-    std::cerr << "r " << r << " base " << b.base.size();
-    for (const auto& l : b.links) std::cerr << " " << l.size();
-    std::cerr << "\n";
+class ModelLuts : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    cell_ = new CellModel(test::coarse_default_cell());
+    grid_ = new CspaceGrid(make_grid(cell_->config));
+    silhouettes_ = new ModelSilhouettes(*cell_, *grid_, ModelLutOptions{});
+  }
+  static void TearDownTestSuite() {
+    delete silhouettes_;
+    delete grid_;
+    delete cell_;
+  }
+
+  static std::vector<CellToPixelsTable> cell_tables(unsigned threads = 2) {
+    CellTableBuild build;
+    build.cell_count = grid_->cell_count();
+    build.camera_count = cell_->cameras.size();
+    build.columns = cell_->feature_grid.columns();
+    build.rows = cell_->feature_grid.rows();
+    build.threads = threads;
+    return build_cell_to_pixels_tables(build, [](CellIndex cell, std::vector<FeatureMask>& masks) {
+      silhouettes_->add_silhouettes(cell, masks);
+    });
+  }
+
+  static CellModel* cell_;
+  static CspaceGrid* grid_;
+  static ModelSilhouettes* silhouettes_;
+};
+
+CellModel* ModelLuts::cell_ = nullptr;
+CspaceGrid* ModelLuts::grid_ = nullptr;
+ModelSilhouettes* ModelLuts::silhouettes_ = nullptr;
+
+TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {
+  test::PropertyRun run(300);
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+  std::vector<Ball> balls;
+  for (int i = 0; i < run.iterations(); ++i) {
+    const CellIndex cell = any_cell(run.rng());
+    silhouettes_->envelope().balls_of_cell(grid_->coords_of(cell).value(), balls);
+    const auto q = test::configuration_in(*grid_, cell, run.rng());
+    for (const auto& shape : collision_shapes_at(*cell_->robot, q)) {
+      const TriangleMesh mesh = tessellate(shape);
+      for (const auto& point : mesh.vertices) {
+        const bool inside = std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
+          return (point - ball.centre_m).norm() <= ball.radius_m + 1e-9;
+        });
+        ASSERT_TRUE(inside) << "cell " << cell << " point " << point.transpose();
+      }
+    }
   }
 }
 
-TEST(ModelLuts, DefaultCellStatistics) {
-  const CellModel cell = load_cell_model(default_cell());
-  const CspaceGrid grid = make_grid(cell.config);
-  const auto start = std::chrono::steady_clock::now();
-  int last_stage = -1;
-  ModelLutOptions options;
-  if (const char* r = std::getenv("BALL_R")) options.ball_radius_m = std::atof(r);
-  const LutSet set = build_model_luts(cell, grid, options, [&](int stage, double) {
-    if (stage != last_stage) {
-      std::cerr << "stage " << stage << " at " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << "\n";
-      last_stage = stage;
+TEST_F(ModelLuts, SilhouetteHoldsTheRenderedRobot) {
+  test::PropertyRun run(40);
+  SimulatedCell sim = simulate_cell(*cell_, SensorSettings{});
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+  const FeatureGrid& features = cell_->feature_grid;
+  for (int i = 0; i < run.iterations(); ++i) {
+    const CellIndex cell = any_cell(run.rng());
+    const auto q = test::configuration_in(*grid_, cell, run.rng());
+    for (std::size_t camera = 0; camera < sim.camera_count(); ++camera) {
+      FeatureMask silhouette(features);
+      silhouettes_->add_silhouette(cell, camera, silhouette);
+      const cv::Mat covered = sim.robot_coverage(camera, q);
+      for (int y = 0; y < covered.rows; ++y) {
+        for (int x = 0; x < covered.cols; ++x) {
+          if (covered.at<std::uint8_t>(y, x) == 0) continue;
+          ASSERT_TRUE(silhouette.test(x / features.cell_width_px(), y / features.cell_height_px()))
+              << "camera " << camera << " pixel " << x << "," << y << " cell " << cell;
+        }
+      }
     }
-  });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cerr << "\nbuild " << seconds << " s\n";
-  for (const auto& camera : set.cameras) {
-    std::size_t covered = 0;
-    for (CellIndex c = 0; c < grid.cell_count(); ++c) covered += camera.cell_to_pixels.mask_of(c).count();
-    std::cerr << camera.camera << " lut1 rects " << camera.cell_to_pixels.rects().size() << " bytes "
-              << camera.cell_to_pixels.bytes() << " avg px " << double(covered) / grid.cell_count()
-              << " | lut2 boxes " << camera.pixel_to_cells.total_boxes() << " bytes "
-              << camera.pixel_to_cells.bytes() << "\n";
   }
-  std::cerr << "static " << set.static_cells.count() << "\n";
+}
+
+TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {
+  const auto tables = cell_tables();
+  for (const std::size_t budget : {std::size_t{256} << 20, std::size_t{1} << 16}) {
+    PixelTableBuild build;
+    build.memory_budget_bytes = budget;  // the small budget makes one band per feature row
+    const PixelToCellsTable pixels = build_pixel_to_cells_table(tables[0], *grid_, build);
+    std::vector<CellSet> oracle(pixels.pixel_count(), CellSet(grid_->cell_count()));
+    for (CellIndex cell = 0; cell < grid_->cell_count(); ++cell) {
+      const FeatureMask mask = tables[0].mask_of(cell);
+      for (int row = 0; row < mask.rows(); ++row) {
+        for (int column = 0; column < mask.columns(); ++column) {
+          if (mask.test(column, row)) {
+            oracle[static_cast<std::size_t>(row * mask.columns() + column)].set(cell);
+          }
+        }
+      }
+    }
+    for (std::size_t pixel = 0; pixel < pixels.pixel_count(); ++pixel) {
+      CellSet decoded(grid_->cell_count());
+      pixels.add_cells(pixel, decoded);
+      ASSERT_EQ(decoded, oracle[pixel]) << "pixel " << pixel << " budget " << budget;
+    }
+  }
+}
+
+TEST_F(ModelLuts, CellTableDoesNotDependOnTheThreadCount) {
+  const auto one = cell_tables(1);
+  const auto two = cell_tables(2);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t camera = 0; camera < one.size(); ++camera) {
+    EXPECT_TRUE(std::equal(one[camera].offsets().begin(), one[camera].offsets().end(),
+                           two[camera].offsets().begin(), two[camera].offsets().end()));
+    EXPECT_TRUE(std::equal(one[camera].rects().begin(), one[camera].rects().end(),
+                           two[camera].rects().begin(), two[camera].rects().end()));
+  }
+}
+
+TEST_F(ModelLuts, StaticCellsHoldEveryCollisionWithTheWorkbench) {
+  const LutSet set = build_model_luts(*cell_, *grid_);
+  ASSERT_FALSE(cell_->obstacles.empty());
+  const GroundTruth truth(cell_->obstacles);
+  test::PropertyRun run(3000);
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+  // Joint 1 turned towards the workbench (at about 139 degrees), the rest anywhere.
+  std::uniform_real_distribution<double> towards_bench(1.7, 3.1);
+  int collisions = 0;
+  for (int i = 0; i < run.iterations(); ++i) {
+    auto q = test::configuration_in(*grid_, any_cell(run.rng()), run.rng());
+    q[0] = towards_bench(run.rng());
+    if (!truth.collides(collision_shapes_at(*cell_->robot, q))) continue;
+    ++collisions;
+    ASSERT_TRUE(set.static_cells.test(test::cell_of(*grid_, q))) << "sample " << i;
+  }
+  EXPECT_GT(collisions, run.iterations() / 200) << "too few collisions to test anything";
+  EXPECT_LT(set.static_cells.count(), grid_->cell_count() / 2);
+}
+
+TEST_F(ModelLuts, SetCarriesTheFingerprintOfItsInputs) {
+  const LutSet set = build_model_luts(*cell_, *grid_);
+  EXPECT_EQ(set.fingerprint, model_lut_fingerprint(*cell_, *grid_, ModelLutOptions{}));
+  EXPECT_EQ(set.grid_fingerprint, grid_->fingerprint());
+  EXPECT_EQ(set.cameras.size(), cell_->cameras.size());
+  ModelLutOptions padded;
+  padded.padding_m = 0.03;
+  EXPECT_NE(model_lut_fingerprint(*cell_, *grid_, padded), set.fingerprint);
+  CellModel moved = *cell_;
+  moved.obstacles[0].pose.translation().x() += 0.01;
+  EXPECT_NE(model_lut_fingerprint(moved, *grid_, ModelLutOptions{}), set.fingerprint);
+}
+
+TEST_F(ModelLuts, AbsurdInputsAreRefused) {
+  ModelLutOptions options;
+  options.ball_radius_m = 0.0;
+  EXPECT_THROW(ModelSilhouettes(*cell_, *grid_, options), std::invalid_argument);
+  options = ModelLutOptions{};
+  options.padding_m = -0.1;
+  EXPECT_THROW(ModelSilhouettes(*cell_, *grid_, options), std::invalid_argument);
+  CellModel no_camera = *cell_;
+  no_camera.cameras.clear();
+  EXPECT_THROW(ModelSilhouettes(no_camera, *grid_, ModelLutOptions{}), std::invalid_argument);
+  CellModel no_robot = *cell_;
+  no_robot.robot.reset();
+  EXPECT_THROW(ModelSilhouettes(no_robot, *grid_, ModelLutOptions{}), std::invalid_argument);
 }
 
 }  // namespace

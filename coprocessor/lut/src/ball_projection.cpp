@@ -15,12 +15,12 @@ constexpr int kEdgeSamples = 32;
 constexpr double kCurvatureMargin_px = 2.0;
 
 // The normalised coordinate range [lo, hi] of a ball along one image axis, from the tangent
-// planes through the optical centre (see the header). Requires z > radius.
-void tangent_range(double x, double z, double radius, double& lo, double& hi) {
-  const double denominator = z * z - radius * radius;
+// planes through the optical centre (see the header). denominator = z^2 - r^2 > 0.
+void tangent_range(double x, double z, double radius, double denominator, double inverse,
+                   double& lo, double& hi) {
   const double root = radius * std::sqrt(x * x + denominator);
-  lo = (x * z - root) / denominator;
-  hi = (x * z + root) / denominator;
+  lo = (x * z - root) * inverse;
+  hi = (x * z + root) * inverse;
 }
 
 }  // namespace
@@ -54,8 +54,10 @@ std::optional<FeatureRect> BallProjection::feature_rect(const Ball& ball_in_cell
   double x1 = 0.0;
   double y0 = 0.0;
   double y1 = 0.0;
-  tangent_range(centre.x(), centre.z(), radius, x0, x1);
-  tangent_range(centre.y(), centre.z(), radius, y0, y1);
+  const double denominator = centre.z() * centre.z() - radius * radius;
+  const double inverse = 1.0 / denominator;
+  tangent_range(centre.x(), centre.z(), radius, denominator, inverse, x0, x1);
+  tangent_range(centre.y(), centre.z(), radius, denominator, inverse, y0, y1);
   if (!distorted_) {
     return cells_of(PixelBox{intrinsics_.fx_px * x0 + intrinsics_.cx_px,
                              intrinsics_.fy_px * y0 + intrinsics_.cy_px,

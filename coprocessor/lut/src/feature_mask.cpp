@@ -47,6 +47,11 @@ void FeatureMask::set_rect(const FeatureRect& rect) {
   if (rect.col0 > col1 || rect.row0 > row1) return;
   const int first_word = rect.col0 >> 6;
   const int last_word = col1 >> 6;
+  if (words_per_row_ == 1) {  // the common grid of up to 64 columns: one word per row
+    const std::uint64_t bits = bit_span(rect.col0, col1);
+    for (int row = rect.row0; row <= row1; ++row) words_[static_cast<std::size_t>(row)] |= bits;
+    return;
+  }
   for (int row = rect.row0; row <= row1; ++row) {
     std::uint64_t* words = row_words(row);
     for (int word = first_word; word <= last_word; ++word) {

@@ -1,34 +1,13 @@
 #include "safecell/lut/model_luts.hpp"
 
-#include <cmath>
-#include <stdexcept>
-#include <string>
 
 #include "safecell/base/fnv1a.hpp"
-#include "safecell/lut/ball_projection.hpp"
-#include "safecell/lut/cell_envelope.hpp"
 #include "safecell/lut/cell_table_builder.hpp"
 #include "safecell/lut/pixel_table_builder.hpp"
 #include "safecell/lut/static_obstacle_cells.hpp"
 
 namespace safecell {
 namespace {
-
-void check_inputs(const CellModel& cell, const ModelLutOptions& options) {
-  if (!cell.robot) {
-    throw std::invalid_argument("cell '" + cell.config.name +
-                                "' names no robot model; model-mode tables need one");
-  }
-  if (cell.cameras.empty()) throw std::invalid_argument("cell '" + cell.config.name + "' has no camera");
-  if (!std::isfinite(options.ball_radius_m) || options.ball_radius_m < 0.005 ||
-      options.ball_radius_m > 0.5) {
-    throw std::invalid_argument("ball radius must be 0.005..0.5 m, got " +
-                                std::to_string(options.ball_radius_m));
-  }
-  if (!std::isfinite(options.padding_m) || options.padding_m < 0.0 || options.padding_m > 1.0) {
-    throw std::invalid_argument("padding must be 0..1 m, got " + std::to_string(options.padding_m));
-  }
-}
 
 void add_pose(Fnv1a64& hash, const Eigen::Isometry3d& pose) {
   for (int row = 0; row < 3; ++row) {
@@ -46,20 +25,11 @@ void add_balls(Fnv1a64& hash, const std::vector<Ball>& balls) {
   }
 }
 
-// Bodies with at most this many prefixes have their silhouettes cached.
-constexpr std::size_t kMaxCachedPrefixes = 4096;
-
-void project(const BallProjection& projection, const std::vector<Ball>& balls, FeatureMask& mask) {
-  for (const auto& ball : balls) {
-    if (const auto rect = projection.feature_rect(ball)) mask.set_rect(*rect);
-  }
-}
-
 }  // namespace
 
 std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
                                     const ModelLutOptions& options) {
-  check_inputs(cell, options);
+  check_model_lut_options(cell, options);
   Fnv1a64 hash;
   hash.add_u64(grid.fingerprint());
   hash.add_double(options.ball_radius_m);
@@ -105,51 +75,24 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
 
 LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
                         const ModelLutOptions& options, const StagedProgress& progress) {
-  check_inputs(cell, options);
-  const RobotModel& robot = *cell.robot;
-  const CellEnvelope envelope(robot, cover_with_balls(robot, options.ball_radius_m), grid,
-                              options.padding_m);
-  std::vector<BallProjection> projections;
-  projections.reserve(cell.cameras.size());
-  for (const auto& camera : cell.cameras) projections.emplace_back(camera, cell.feature_grid);
-
+  const ModelSilhouettes silhouettes(cell, grid, options);
   const auto stage = [&progress](int index) -> ProgressCallback {
     if (!progress) return {};
     return [&progress, index](double fraction) { progress(index, fraction); };
   };
 
-  // The bodies near the base are projected once per prefix (cell_envelope.hpp) and reused.
-  const std::size_t cached_bodies = envelope.first_uncached_body(kMaxCachedPrefixes);
-  std::vector<std::vector<std::vector<FeatureMask>>> cached(cached_bodies);  // [body][prefix][camera]
-  for (std::size_t body = 0; body < cached_bodies; ++body) {
-    cached[body].resize(envelope.prefix_count(body));
-    for (std::size_t prefix = 0; prefix < cached[body].size(); ++prefix) {
-      std::vector<Ball> balls;
-      envelope.append_body_balls(body, prefix, balls);
-      cached[body][prefix].assign(projections.size(), FeatureMask(cell.feature_grid));
-      for (std::size_t camera = 0; camera < projections.size(); ++camera) {
-        project(projections[camera], balls, cached[body][prefix][camera]);
-      }
-    }
-  }
-  const CellSilhouettes silhouettes = [&](CellIndex cell_index, std::vector<FeatureMask>& masks) {
-    thread_local std::vector<Ball> balls;
-    const GridCoords coords = grid.coords_of(cell_index).value();
-    envelope.balls_of_bodies(coords, cached_bodies, balls);
-    for (std::size_t camera = 0; camera < projections.size(); ++camera) {
-      for (std::size_t body = 0; body < cached_bodies; ++body) {
-        masks[camera] |= cached[body][envelope.prefix_of(coords, body)][camera];
-      }
-      project(projections[camera], balls, masks[camera]);
-    }
-  };
   CellTableBuild table_build;
   table_build.cell_count = grid.cell_count();
   table_build.camera_count = cell.cameras.size();
   table_build.columns = cell.feature_grid.columns();
   table_build.rows = cell.feature_grid.rows();
   table_build.threads = options.threads;
-  auto cell_tables = build_cell_to_pixels_tables(table_build, silhouettes, stage(0));
+  auto cell_tables = build_cell_to_pixels_tables(
+      table_build,
+      [&silhouettes](CellIndex cell_index, std::vector<FeatureMask>& masks) {
+        silhouettes.add_silhouettes(cell_index, masks);
+      },
+      stage(0));
 
   LutSet set;
   set.fingerprint = model_lut_fingerprint(cell, grid, options);
@@ -168,10 +111,12 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
     };
     PixelToCellsTable pixel_table =
         build_pixel_to_cells_table(cell_tables[camera], grid, pixel_build, inversion);
-    set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), std::move(cell_tables[camera]),
+    cell_tables[camera] = CellToPixelsTable{};  // computed from the model when needed
+    set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), CellToPixelsTable{},
                                      std::move(pixel_table)});
   }
-  set.static_cells = static_obstacle_cells(envelope, cell.obstacles, options.threads, stage(2));
+  set.static_cells =
+      static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads, stage(2));
   return set;
 }
 

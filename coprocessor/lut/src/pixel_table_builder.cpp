@@ -7,7 +7,7 @@
 namespace safecell {
 namespace {
 
-constexpr std::uint32_t kMaxExtent = 65535;
+constexpr std::uint32_t kMaxExtent = 255;  // one byte per extent
 
 // Whether every row of the box (start, extents) lies in `cells`.
 bool box_inside(const CellSet& cells, const BoxAxes& axes, CellIndex start,
@@ -22,7 +22,7 @@ bool box_inside(const CellSet& cells, const BoxAxes& axes, CellIndex start,
 }  // namespace
 
 std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
-                         std::vector<std::uint16_t>& box_words) {
+                         std::vector<std::uint8_t>& box_bytes) {
   CellSet remaining = cells;
   std::size_t boxes = 0;
   for (CellIndex start = remaining.next_set(0); start < remaining.cell_count();
@@ -33,9 +33,12 @@ std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
     }
     std::uint32_t extents[kMaxJoints]{};
     for (std::uint32_t axis = 0; axis < axes.count; ++axis) extents[axis] = 1;
-    while (coord[0] + extents[0] < axes.cells[0] && cells.test(start + extents[0])) ++extents[0];
+    while (coord[0] + extents[0] < axes.cells[0] && extents[0] < kMaxExtent &&
+           cells.test(start + extents[0])) {
+      ++extents[0];
+    }
     for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
-      while (coord[axis] + extents[axis] < axes.cells[axis]) {
+      while (coord[axis] + extents[axis] < axes.cells[axis] && extents[axis] < kMaxExtent) {
         // The next layer along this axis: the box so far, moved by `extents[axis]` steps.
         std::uint32_t layer[kMaxJoints]{};
         std::copy(extents, extents + axes.count, layer);
@@ -47,10 +50,11 @@ std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
     for_each_box_row(axes, start, extents, [&](CellIndex first, std::uint32_t run) {
       remaining.reset_range(first, first + run);
     });
-    box_words.push_back(static_cast<std::uint16_t>(start & 0xFFFFU));
-    box_words.push_back(static_cast<std::uint16_t>(start >> 16));
+    for (int shift = 0; shift < 32; shift += 8) {
+      box_bytes.push_back(static_cast<std::uint8_t>(start >> shift));
+    }
     for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
-      box_words.push_back(static_cast<std::uint16_t>(extents[axis]));
+      box_bytes.push_back(static_cast<std::uint8_t>(extents[axis]));
     }
     ++boxes;
   }
@@ -65,13 +69,6 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
                                 " cells, the grid " + std::to_string(grid.cell_count()));
   }
   const BoxAxes axes = BoxAxes::of(grid);
-  for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
-    if (axes.cells[axis] > kMaxExtent) {
-      throw std::invalid_argument("joint " + std::to_string(axes.joint[axis] + 1) + " has " +
-                                  std::to_string(axes.cells[axis]) +
-                                  " cells; LUT-2 boxes hold at most 65535 along a joint");
-    }
-  }
   const int columns = cell_table.columns();
   const int rows = cell_table.rows();
   const std::size_t bytes_per_row = static_cast<std::size_t>(columns) *
@@ -81,7 +78,7 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
                               1, static_cast<std::size_t>(rows)));
 
   std::vector<std::uint64_t> offsets{0};
-  std::vector<std::uint16_t> box_words;
+  std::vector<std::uint8_t> box_bytes;
   for (int band = 0; band < rows; band += band_rows) {
     const int band_end = std::min(rows, band + band_rows);
     const auto band_pixels = static_cast<std::size_t>(band_end - band) * static_cast<std::size_t>(columns);
@@ -101,7 +98,7 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
                       }
                     });
     // Cut every pixel's cells into boxes, in parallel, then append in pixel order.
-    std::vector<std::vector<std::uint16_t>> pixel_boxes(band_pixels);
+    std::vector<std::vector<std::uint8_t>> pixel_boxes(band_pixels);
     std::vector<std::size_t> pixel_box_counts(band_pixels);
     parallel_chunks(band_pixels, 16, build.threads,
                     [&](std::size_t, std::size_t begin, std::size_t end) {
@@ -112,11 +109,11 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
                     });
     for (std::size_t pixel = 0; pixel < band_pixels; ++pixel) {
       offsets.push_back(offsets.back() + pixel_box_counts[pixel]);
-      box_words.insert(box_words.end(), pixel_boxes[pixel].begin(), pixel_boxes[pixel].end());
+      box_bytes.insert(box_bytes.end(), pixel_boxes[pixel].begin(), pixel_boxes[pixel].end());
     }
     if (progress) progress(static_cast<double>(band_end) / rows);
   }
-  return PixelToCellsTable(grid, columns, rows, std::move(offsets), std::move(box_words));
+  return PixelToCellsTable(grid, columns, rows, std::move(offsets), std::move(box_bytes));
 }
 
 }  // namespace safecell

@@ -19,7 +19,8 @@ const char* to_string(LutSource source);
 
 struct CameraLuts {
   std::string camera;
-  CellToPixelsTable cell_to_pixels;  // LUT-1
+  // LUT-1; empty in a model-mode set (ModelSilhouettes computes it from the model).
+  CellToPixelsTable cell_to_pixels;
   PixelToCellsTable pixel_to_cells;  // LUT-2
 };
 

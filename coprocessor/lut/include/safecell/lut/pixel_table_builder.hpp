@@ -20,16 +20,15 @@ struct PixelTableBuild {
   std::size_t memory_budget_bytes = 256u << 20;  // for the per-pixel bitsets of one band
 };
 
-// Throws std::invalid_argument when the table is not of the grid, or an axis has more cells
-// than a box extent can hold (65535).
+// Throws std::invalid_argument when the table is not of the grid.
 [[nodiscard]] PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table,
                                                            const CspaceGrid& grid,
                                                            const PixelTableBuild& build = {},
                                                            const ProgressCallback& progress = {});
 
-// The boxes of one set of cells, appended to `box_words` (the coding of PixelToCellsTable).
+// The boxes of one set of cells, appended to `box_bytes` (the coding of PixelToCellsTable).
 // Returns the number of boxes. Exposed for tests.
 std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
-                         std::vector<std::uint16_t>& box_words);
+                         std::vector<std::uint8_t>& box_bytes);
 
 }  // namespace safecell

@@ -1,0 +1,116 @@
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "safecell/lut/pixel_table_builder.hpp"
+#include "safecell/lut/pixel_to_cells_table.hpp"
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+// A grid with the given number of joints of roughly `cells` cells each (one joint may be kept
+// whole, as the wrist is).
+CspaceGrid random_grid(std::mt19937_64& rng, std::uint32_t joints, double cells_scale) {
+  GridSpec spec;
+  spec.m_max_m = 0.1;
+  spec.joint_count = joints;
+  for (std::uint32_t j = 0; j < joints; ++j) {
+    const double cells = std::uniform_real_distribution<double>(1.0, cells_scale)(rng);
+    // dq = 2 asin(m / 2l): pick l so that a range of 1 rad holds about `cells` cells.
+    spec.joints[j] = JointSpec{0.0, 1.0, 0.1 / (2.0 * std::sin(0.5 / cells)),
+                               std::bernoulli_distribution(0.8)(rng)};
+  }
+  auto grid = CspaceGrid::create(spec);
+  if (!grid.ok()) throw std::runtime_error("bad random grid");
+  return grid.value();
+}
+
+CellSet random_cells(std::mt19937_64& rng, const CspaceGrid& grid) {
+  CellSet cells(grid.cell_count());
+  std::uniform_int_distribution<CellIndex> any(0, grid.cell_count() - 1);
+  const int blobs = std::uniform_int_distribution<int>(0, 4)(rng);
+  for (int b = 0; b < blobs; ++b) {
+    // A blob: every cell within a random distance of a random centre (in cell steps).
+    const GridCoords centre = grid.coords_of(any(rng)).value();
+    const double radius = std::uniform_real_distribution<double>(0.5, 6.0)(rng);
+    for (CellIndex c = 0; c < grid.cell_count(); ++c) {
+      const GridCoords at = grid.coords_of(c).value();
+      double d2 = 0.0;
+      for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+        const double d = static_cast<double>(at.along[j]) - static_cast<double>(centre.along[j]);
+        d2 += d * d;
+      }
+      if (d2 <= radius * radius) cells.set(c);
+    }
+  }
+  for (int k = 0; k < 20; ++k) cells.set(any(rng));
+  return cells;
+}
+
+CellSet decoded(const PixelToCellsTable& table) {
+  CellSet cells(table.cell_count());
+  table.for_each_cell(0, [&](CellIndex c) { cells.set(c); });
+  return cells;
+}
+
+TEST(BoxCoding, BoxesDecodeToExactlyTheCells) {
+  test::PropertyRun run(60);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto joints = std::uniform_int_distribution<std::uint32_t>(1, 5)(run.rng());
+    const CspaceGrid grid = random_grid(run.rng(), joints, 12.0);
+    const CellSet cells = random_cells(run.rng(), grid);
+    std::vector<std::uint8_t> bytes;
+    const std::size_t boxes = append_boxes(cells, BoxAxes::of(grid), bytes);
+    const PixelToCellsTable table(grid, 1, 1, {0, boxes}, bytes);
+    EXPECT_EQ(decoded(table), cells) << grid.cell_count() << " cells";
+    CellSet added(grid.cell_count());
+    table.add_cells(0, added);
+    EXPECT_EQ(added, cells);
+    EXPECT_LE(boxes, cells.count());
+  }
+}
+
+TEST(BoxCoding, LongRunsAreCutAt255Cells) {
+  GridSpec spec;
+  spec.m_max_m = 0.01;
+  spec.joint_count = 2;
+  spec.joints[0] = JointSpec{0.0, 3.0, 1.0, true};  // 300 cells
+  spec.joints[1] = JointSpec{0.0, 1.0, 1.0, true};  // 100 cells
+  const CspaceGrid grid = CspaceGrid::create(spec).value();
+  ASSERT_GT(grid.cells_along(0), 255U);
+  CellSet cells(grid.cell_count());
+  cells.fill();
+  std::vector<std::uint8_t> bytes;
+  const std::size_t boxes = append_boxes(cells, BoxAxes::of(grid), bytes);
+  EXPECT_EQ(boxes, 2U);  // 255 + 45 along joint 0, each 100 deep along joint 1
+  const PixelToCellsTable table(grid, 1, 1, {0, boxes}, bytes);
+  EXPECT_EQ(decoded(table), cells);
+}
+
+TEST(BoxCoding, MalformedTablesAreRefused) {
+  GridSpec spec;
+  spec.m_max_m = 0.1;
+  spec.joint_count = 2;
+  spec.joints[0] = JointSpec{0.0, 1.0, 1.0, true};
+  spec.joints[1] = JointSpec{0.0, 1.0, 1.0, true};
+  const CspaceGrid grid = CspaceGrid::create(spec).value();  // 10 x 10
+  const std::uint8_t inside[] = {0, 0, 0, 0, 10, 10};
+  EXPECT_NO_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {inside, inside + 6}));
+  const std::uint8_t too_long[] = {5, 0, 0, 0, 6, 1};
+  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {too_long, too_long + 6}),
+               std::invalid_argument);
+  const std::uint8_t empty_extent[] = {0, 0, 0, 0, 0, 1};
+  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {empty_extent, empty_extent + 6}),
+               std::invalid_argument);
+  const std::uint8_t outside[] = {100, 0, 0, 0, 1, 1};
+  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {outside, outside + 6}),
+               std::invalid_argument);
+  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 2}, {inside, inside + 6}), std::invalid_argument);
+  EXPECT_THROW(PixelToCellsTable(grid, 2, 1, {0, 1}, {inside, inside + 6}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace safecell

@@ -1,0 +1,61 @@
+#include "safecell/lut/cell_set.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+TEST(CellSet, RangesAgreeWithABoolVector) {
+  test::PropertyRun run(200);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto count = std::uniform_int_distribution<std::uint32_t>(1, 400)(run.rng());
+    CellSet set(count);
+    std::vector<bool> oracle(count);
+    for (int k = 0; k < 8; ++k) {
+      std::uniform_int_distribution<std::uint32_t> at(0, count);
+      std::uint32_t begin = at(run.rng());
+      std::uint32_t end = at(run.rng());
+      if (begin > end) std::swap(begin, end);
+      const bool setting = k % 3 != 2;
+      bool all = true;
+      for (std::uint32_t c = begin; c < end; ++c) all = all && oracle[c];
+      ASSERT_EQ(set.all_in_range(begin, end), all);
+      if (setting) {
+        set.set_range(begin, end);
+      } else {
+        set.reset_range(begin, end);
+      }
+      for (std::uint32_t c = begin; c < end; ++c) oracle[c] = setting;
+    }
+    std::size_t total = 0;
+    CellIndex expected_next = count;
+    for (std::uint32_t c = count; c-- > 0;) {
+      ASSERT_EQ(set.test(c), oracle[c]) << c;
+      if (oracle[c]) {
+        ++total;
+        expected_next = c;
+      }
+      ASSERT_EQ(set.next_set(c), oracle[c] ? c : expected_next) << c;
+    }
+    EXPECT_EQ(set.count(), total);
+    EXPECT_EQ(set.any(), total > 0);
+  }
+}
+
+TEST(CellSet, FillSetsExactlyTheCells) {
+  CellSet set(130);
+  set.fill();
+  EXPECT_EQ(set.count(), 130U);
+  EXPECT_EQ(set.next_set(129), 129U);
+  set.clear();
+  EXPECT_FALSE(set.any());
+  EXPECT_EQ(set.next_set(0), 130U);
+}
+
+}  // namespace
+}  // namespace safecell

@@ -1,0 +1,118 @@
+#include "safecell/lut/feature_mask.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+// A mask of random blobs: rectangles and single cells.
+FeatureMask random_mask(std::mt19937_64& rng, int columns, int rows) {
+  FeatureMask mask(columns, rows);
+  std::uniform_int_distribution<int> column(0, columns - 1);
+  std::uniform_int_distribution<int> row(0, rows - 1);
+  const int blobs = std::uniform_int_distribution<int>(0, 12)(rng);
+  for (int i = 0; i < blobs; ++i) {
+    const int c0 = column(rng);
+    const int r0 = row(rng);
+    const int c1 = std::min(columns - 1, c0 + std::uniform_int_distribution<int>(0, 20)(rng));
+    const int r1 = std::min(rows - 1, r0 + std::uniform_int_distribution<int>(0, 20)(rng));
+    mask.set_rect(FeatureRect{static_cast<std::uint16_t>(c0), static_cast<std::uint16_t>(r0),
+                              static_cast<std::uint16_t>(c1), static_cast<std::uint16_t>(r1)});
+  }
+  for (int i = 0; i < 30; ++i) mask.set(column(rng), row(rng));
+  return mask;
+}
+
+TEST(FeatureMask, SetRectEqualsCellByCell) {
+  test::PropertyRun run(200);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const int columns = std::uniform_int_distribution<int>(1, 200)(run.rng());
+    const int rows = std::uniform_int_distribution<int>(1, 80)(run.rng());
+    FeatureMask mask(columns, rows);
+    std::vector<std::vector<bool>> oracle(static_cast<std::size_t>(rows),
+                                          std::vector<bool>(static_cast<std::size_t>(columns)));
+    for (int k = 0; k < 5; ++k) {
+      std::uniform_int_distribution<int> c(0, columns - 1);
+      std::uniform_int_distribution<int> r(0, rows - 1);
+      int c0 = c(run.rng()), c1 = c(run.rng()), r0 = r(run.rng()), r1 = r(run.rng());
+      if (c0 > c1) std::swap(c0, c1);
+      if (r0 > r1) std::swap(r0, r1);
+      mask.set_rect(FeatureRect{static_cast<std::uint16_t>(c0), static_cast<std::uint16_t>(r0),
+                                static_cast<std::uint16_t>(c1), static_cast<std::uint16_t>(r1)});
+      for (int y = r0; y <= r1; ++y) {
+        for (int x = c0; x <= c1; ++x) oracle[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] = true;
+      }
+    }
+    std::size_t set = 0;
+    for (int y = 0; y < rows; ++y) {
+      for (int x = 0; x < columns; ++x) {
+        ASSERT_EQ(mask.test(x, y), oracle[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)])
+            << x << "," << y << " in " << columns << " x " << rows;
+        set += oracle[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] ? 1U : 0U;
+      }
+    }
+    EXPECT_EQ(mask.count(), set);
+  }
+}
+
+TEST(FeatureMask, RectanglesCoverTheMaskExactlyWithoutOverlap) {
+  test::PropertyRun run(300);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const int columns = i % 3 == 0 ? 64 : std::uniform_int_distribution<int>(1, 150)(run.rng());
+    const int rows = std::uniform_int_distribution<int>(1, 70)(run.rng());
+    const FeatureMask mask = random_mask(run.rng(), columns, rows);
+    FeatureMask rebuilt(columns, rows);
+    std::size_t area = 0;
+    for (const auto& rect : mask.rectangles()) {
+      ASSERT_LE(rect.col0, rect.col1);
+      ASSERT_LE(rect.row0, rect.row1);
+      area += static_cast<std::size_t>(rect.col1 - rect.col0 + 1) *
+              static_cast<std::size_t>(rect.row1 - rect.row0 + 1);
+      rebuilt.set_rect(rect);
+    }
+    EXPECT_EQ(rebuilt, mask);
+    EXPECT_EQ(area, mask.count()) << "rectangles overlap";
+  }
+}
+
+TEST(FeatureMask, SetOperations) {
+  FeatureMask a(70, 3);
+  FeatureMask b(70, 3);
+  a.set(1, 0);
+  a.set(65, 2);
+  b.set(65, 2);
+  b.set(69, 1);
+  EXPECT_TRUE(a.intersects(b));
+  FeatureMask both = a;
+  both &= b;
+  EXPECT_EQ(both.count(), 1U);
+  FeatureMask either = a;
+  either |= b;
+  EXPECT_EQ(either.count(), 3U);
+  either.subtract(b);
+  EXPECT_EQ(either, [] {
+    FeatureMask m(70, 3);
+    m.set(1, 0);
+    return m;
+  }());
+  EXPECT_THROW(a |= FeatureMask(64, 3), std::invalid_argument);
+}
+
+TEST(FeatureMask, ImageRoundTrip) {
+  test::PropertyRun run(20);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const FeatureMask mask = random_mask(run.rng(), 64, 64);
+    EXPECT_EQ(FeatureMask::from_image(mask.to_image()), mask);
+  }
+  EXPECT_THROW(FeatureMask(0, 4), std::invalid_argument);
+  EXPECT_THROW(FeatureMask::from_image(cv::Mat(4, 4, CV_16UC1)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace safecell
