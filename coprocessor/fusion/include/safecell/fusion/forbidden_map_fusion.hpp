@@ -1,0 +1,88 @@
+#pragma once
+// The fusion of paper §4.3-4.4 (DESIGN.md §3, "Fusion"): per camera, remove the robot from the
+// blocked mask (robot_removal.hpp), back-project what remains with LUT-2 into the camera's set of
+// suspicious cells (the union of the boxes of its blocked pixels); a cell is critical when at
+// least `camera_threshold` cameras suspect it; forbidden = critical + static obstacles.
+//
+// Counting is per camera, not per pixel: many pixels of one camera marking a cell still count
+// once. An unknown view counts as suspecting every cell the camera can see at all.
+//
+// After construction a cycle allocates nothing. Not thread-safe: one engine per fusion thread.
+
+#include <cstddef>
+#include <vector>
+
+#include "safecell/fusion/camera_observation.hpp"
+#include "safecell/fusion/robot_removal.hpp"
+#include "safecell/lut/lut_set.hpp"
+#include "safecell/lut/robot_silhouettes.hpp"
+
+namespace safecell {
+
+struct FusionSettings {
+  int camera_threshold = 2;  // 1..camera count
+  RobotRemoval removal = RobotRemoval::kOcclusionAware;
+};
+
+struct FusionCounts {
+  std::vector<std::size_t> obstacle_pixels;  // per camera, after robot removal (0 when unknown)
+  std::size_t critical_cells = 0;
+  std::size_t forbidden_cells = 0;
+};
+
+class ForbiddenMapFusion {
+ public:
+  // Keeps references to `luts` and `silhouettes`: both must outlive the engine. Throws
+  // std::invalid_argument when the silhouettes' camera count differs from the tables', or the
+  // threshold is outside 1..camera count.
+  ForbiddenMapFusion(const LutSet& luts, const RobotSilhouettes& silhouettes,
+                     const FusionSettings& settings);
+
+  // One cycle. robot_cell: the cell of the robot's configuration at the frames' exposure time.
+  // Throws std::invalid_argument for the wrong number of observations or a mask of the wrong
+  // size, std::out_of_range for a robot cell outside the grid.
+  const CellSet& fuse(const std::vector<CameraObservation>& observations, CellIndex robot_cell);
+
+  [[nodiscard]] const CellSet& forbidden() const { return forbidden_; }
+  [[nodiscard]] const CellSet& critical() const { return critical_; }
+  [[nodiscard]] const CellSet& suspicious(std::size_t camera) const { return suspicious_.at(camera); }
+  // The obstacle pixels of one camera in the last cycle (blocked minus the robot).
+  [[nodiscard]] const FeatureMask& obstacles(std::size_t camera) const { return obstacles_.at(camera); }
+  [[nodiscard]] const FusionCounts& counts() const { return counts_; }
+  // Cells each camera can see at all (LUT-2 of some pixel holds them).
+  [[nodiscard]] const CellSet& observable(std::size_t camera) const { return observable_.at(camera); }
+  [[nodiscard]] std::size_t camera_count() const { return luts_.cameras.size(); }
+  [[nodiscard]] const FusionSettings& settings() const { return settings_; }
+
+ private:
+  void check(const std::vector<CameraObservation>& observations) const;
+
+  const LutSet& luts_;
+  const RobotSilhouettes& silhouettes_;
+  FusionSettings settings_;
+  std::vector<CellSet> observable_;
+  std::vector<CellSet> suspicious_;
+  std::vector<const CellSet*> camera_sets_;  // this cycle's set per camera
+  std::vector<CellSet> at_least_;  // at_least_[k]: cells suspected by at least k + 1 cameras
+  std::vector<FeatureMask> robot_;
+  std::vector<FeatureMask> obstacles_;
+  CellSet critical_;
+  CellSet forbidden_;
+  FusionCounts counts_;
+};
+
+// The cells that at least `threshold` of the sets hold, into `result` (scratch: `threshold`
+// sets of the same size, reused). Word-parallel: at_least[k] |= at_least[k - 1] & set.
+void count_at_least(const std::vector<const CellSet*>& sets, int threshold,
+                    std::vector<CellSet>& scratch, CellSet& result);
+
+// Every cell some pixel of the table back-projects to.
+[[nodiscard]] CellSet observable_cells(const PixelToCellsTable& table);
+
+// Robot removal for every known camera (shared by the fast fusion and the baseline).
+void remove_robot_from_views(const std::vector<CameraObservation>& observations,
+                             const RobotSilhouettes& silhouettes, CellIndex robot_cell,
+                             RobotRemoval removal, std::vector<FeatureMask>& robot,
+                             std::vector<FeatureMask>& obstacles);
+
+}  // namespace safecell

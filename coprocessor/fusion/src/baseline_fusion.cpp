@@ -1,0 +1,76 @@
+#include "safecell/fusion/baseline_fusion.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace safecell {
+
+BaselineFusion::BaselineFusion(const LutSet& luts, const RobotSilhouettes& silhouettes,
+                               const FusionSettings& settings)
+    : luts_(luts), silhouettes_(silhouettes), settings_(settings) {
+  if (silhouettes.camera_count() != luts.cameras.size() || luts.cameras.size() > 254) {
+    throw std::invalid_argument("baseline fusion: camera counts of tables and silhouettes differ");
+  }
+  if (settings.camera_threshold < 1 ||
+      static_cast<std::size_t>(settings.camera_threshold) > luts.cameras.size()) {
+    throw std::invalid_argument("camera threshold " + std::to_string(settings.camera_threshold) +
+                                " outside 1.." + std::to_string(luts.cameras.size()));
+  }
+  const std::uint32_t cells = luts.static_cells.cell_count();
+  for (const auto& camera : luts.cameras) {
+    const CellSet seen = observable_cells(camera.pixel_to_cells);
+    std::vector<CellIndex> list;
+    for (CellIndex cell = seen.next_set(0); cell < cells; cell = seen.next_set(cell + 1)) {
+      list.push_back(cell);
+    }
+    observable_.push_back(std::move(list));
+    robot_.emplace_back(luts.columns, luts.rows);
+    obstacles_.emplace_back(luts.columns, luts.rows);
+  }
+  counters_.assign(cells, 0);
+  stamps_.assign(cells, 0);
+  forbidden_ = CellSet(cells);
+}
+
+void BaselineFusion::count_cell(CellIndex cell, std::uint8_t camera_stamp) {
+  if (stamps_[cell] == camera_stamp) return;
+  stamps_[cell] = camera_stamp;
+  ++counters_[cell];
+}
+
+const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observations,
+                                    CellIndex robot_cell) {
+  if (observations.size() != luts_.cameras.size()) {
+    throw std::invalid_argument("baseline fusion: wrong number of camera observations");
+  }
+  if (robot_cell >= counters_.size()) throw std::out_of_range("robot cell outside the grid");
+  remove_robot_from_views(observations, silhouettes_, robot_cell, settings_.removal, robot_,
+                          obstacles_);
+  std::fill(counters_.begin(), counters_.end(), 0);
+  std::fill(stamps_.begin(), stamps_.end(), 0);
+  for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+    const auto stamp = static_cast<std::uint8_t>(camera + 1);
+    if (!observations[camera].known) {
+      for (const CellIndex cell : observable_[camera]) count_cell(cell, stamp);
+      continue;
+    }
+    const FeatureMask& obstacles = obstacles_[camera];
+    const PixelToCellsTable& table = luts_.cameras[camera].pixel_to_cells;
+    for (int row = 0; row < obstacles.rows(); ++row) {
+      for (int column = 0; column < obstacles.columns(); ++column) {
+        if (!obstacles.test(column, row)) continue;
+        table.for_each_cell(static_cast<std::size_t>(row * obstacles.columns() + column),
+                            [&](CellIndex cell) { count_cell(cell, stamp); });
+      }
+    }
+  }
+  forbidden_.clear();
+  const auto threshold = static_cast<std::uint8_t>(settings_.camera_threshold);
+  for (CellIndex cell = 0; cell < counters_.size(); ++cell) {
+    if (counters_[cell] >= threshold || luts_.static_cells.test(cell)) forbidden_.set(cell);
+  }
+  return forbidden_;
+}
+
+}  // namespace safecell

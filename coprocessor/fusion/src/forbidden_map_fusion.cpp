@@ -1,0 +1,142 @@
+#include "safecell/fusion/forbidden_map_fusion.hpp"
+
+#include <bit>
+#include <stdexcept>
+#include <string>
+
+namespace safecell {
+
+void count_at_least(const std::vector<const CellSet*>& sets, int threshold,
+                    std::vector<CellSet>& scratch, CellSet& result) {
+  if (threshold < 1) throw std::invalid_argument("camera threshold must be >= 1");
+  const std::size_t levels = static_cast<std::size_t>(threshold);
+  for (std::size_t k = 0; k < levels; ++k) scratch[k].clear();
+  const std::size_t words = result.words().size();
+  for (const CellSet* set : sets) {
+    const std::uint64_t* incoming = set->words().data();
+    // Highest level first, so that each set adds at most one to a cell's count.
+    for (std::size_t k = levels; k-- > 1;) {
+      std::uint64_t* level = scratch[k].words().data();
+      const std::uint64_t* below = scratch[k - 1].words().data();
+      for (std::size_t w = 0; w < words; ++w) level[w] |= below[w] & incoming[w];
+    }
+    std::uint64_t* first = scratch[0].words().data();
+    for (std::size_t w = 0; w < words; ++w) first[w] |= incoming[w];
+  }
+  result.words() = scratch[levels - 1].words();
+}
+
+CellSet observable_cells(const PixelToCellsTable& table) {
+  CellSet cells(table.cell_count());
+  for (std::size_t pixel = 0; pixel < table.pixel_count(); ++pixel) table.add_cells(pixel, cells);
+  return cells;
+}
+
+void remove_robot_from_views(const std::vector<CameraObservation>& observations,
+                             const RobotSilhouettes& silhouettes, CellIndex robot_cell,
+                             RobotRemoval removal, std::vector<FeatureMask>& robot,
+                             std::vector<FeatureMask>& obstacles) {
+  for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+    if (!observations[camera].known) {
+      obstacles[camera].clear();
+      continue;
+    }
+    robot[camera].clear();
+    silhouettes.add_silhouette(robot_cell, camera, robot[camera]);
+    remove_robot(observations[camera].blocked, robot[camera], removal, obstacles[camera]);
+  }
+}
+
+ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouettes& silhouettes,
+                                       const FusionSettings& settings)
+    : luts_(luts), silhouettes_(silhouettes), settings_(settings) {
+  if (silhouettes.camera_count() != luts.cameras.size()) {
+    throw std::invalid_argument("robot silhouettes for " +
+                                std::to_string(silhouettes.camera_count()) + " cameras, tables for " +
+                                std::to_string(luts.cameras.size()));
+  }
+  if (settings.camera_threshold < 1 ||
+      static_cast<std::size_t>(settings.camera_threshold) > luts.cameras.size()) {
+    throw std::invalid_argument("camera threshold " + std::to_string(settings.camera_threshold) +
+                                " outside 1.." + std::to_string(luts.cameras.size()) +
+                                " (the number of cameras)");
+  }
+  const std::uint32_t cells = luts.static_cells.cell_count();
+  for (const auto& camera : luts.cameras) {
+    if (camera.pixel_to_cells.cell_count() != cells) {
+      throw std::invalid_argument("LUT-2 of camera '" + camera.camera + "' is of another grid");
+    }
+    observable_.push_back(observable_cells(camera.pixel_to_cells));
+    suspicious_.emplace_back(cells);
+    robot_.emplace_back(luts.columns, luts.rows);
+    obstacles_.emplace_back(luts.columns, luts.rows);
+  }
+  camera_sets_.reserve(luts.cameras.size());
+  at_least_.assign(static_cast<std::size_t>(settings.camera_threshold), CellSet(cells));
+  critical_ = CellSet(cells);
+  forbidden_ = CellSet(cells);
+  counts_.obstacle_pixels.assign(luts.cameras.size(), 0);
+}
+
+void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observations) const {
+  if (observations.size() != luts_.cameras.size()) {
+    throw std::invalid_argument(std::to_string(observations.size()) + " camera observations for " +
+                                std::to_string(luts_.cameras.size()) + " cameras");
+  }
+  for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+    const auto& blocked = observations[camera].blocked;
+    if (observations[camera].known &&
+        (blocked.columns() != luts_.columns || blocked.rows() != luts_.rows)) {
+      throw std::invalid_argument("camera '" + luts_.cameras[camera].camera + "': blocked mask of " +
+                                  std::to_string(blocked.columns()) + " x " +
+                                  std::to_string(blocked.rows()) + " cells, the tables have " +
+                                  std::to_string(luts_.columns) + " x " +
+                                  std::to_string(luts_.rows));
+    }
+  }
+}
+
+const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& observations,
+                                        CellIndex robot_cell) {
+  check(observations);
+  if (robot_cell >= critical_.cell_count()) {
+    throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
+  }
+  remove_robot_from_views(observations, silhouettes_, robot_cell, settings_.removal, robot_,
+                          obstacles_);
+  camera_sets_.clear();
+  for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+    if (!observations[camera].known) {
+      counts_.obstacle_pixels[camera] = 0;
+      camera_sets_.push_back(&observable_[camera]);
+      continue;
+    }
+    CellSet& suspicious = suspicious_[camera];
+    suspicious.clear();
+    const FeatureMask& obstacles = obstacles_[camera];
+    const PixelToCellsTable& table = luts_.cameras[camera].pixel_to_cells;
+    std::size_t pixels = 0;
+    for (int row = 0; row < obstacles.rows(); ++row) {
+      const std::uint64_t* words = obstacles.row_words(row);
+      for (int word = 0; word < obstacles.words_per_row(); ++word) {
+        for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+          const int column = word * 64 + std::countr_zero(bits);
+          table.add_cells(static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
+                              static_cast<std::size_t>(column),
+                          suspicious);
+          ++pixels;
+        }
+      }
+    }
+    counts_.obstacle_pixels[camera] = pixels;
+    camera_sets_.push_back(&suspicious);
+  }
+  count_at_least(camera_sets_, settings_.camera_threshold, at_least_, critical_);
+  forbidden_.words() = critical_.words();
+  forbidden_ |= luts_.static_cells;
+  counts_.critical_cells = critical_.count();
+  counts_.forbidden_cells = forbidden_.count();
+  return forbidden_;
+}
+
+}  // namespace safecell

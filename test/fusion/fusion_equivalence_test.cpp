@@ -1,0 +1,133 @@
+// The fast fusion, the paper's baseline and a dense oracle straight from LUT-1 agree on random
+// blocked masks, unknown cameras, robot cells, thresholds and both kinds of robot removal.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "model_fixture.hpp"
+#include "safecell/fusion/baseline_fusion.hpp"
+#include "safecell/fusion/forbidden_map_fusion.hpp"
+#include "safecell/lut/model_luts.hpp"
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+FeatureMask random_blocked(std::mt19937_64& rng, int columns, int rows) {
+  FeatureMask mask(columns, rows);
+  const int blobs = std::uniform_int_distribution<int>(0, 4)(rng);
+  for (int b = 0; b < blobs; ++b) {
+    const int c0 = std::uniform_int_distribution<int>(0, columns - 1)(rng);
+    const int r0 = std::uniform_int_distribution<int>(0, rows - 1)(rng);
+    const int w = std::uniform_int_distribution<int>(0, 12)(rng);
+    const int h = std::uniform_int_distribution<int>(0, 16)(rng);
+    mask.set_rect(FeatureRect{static_cast<std::uint16_t>(c0), static_cast<std::uint16_t>(r0),
+                              static_cast<std::uint16_t>(std::min(columns - 1, c0 + w)),
+                              static_cast<std::uint16_t>(std::min(rows - 1, r0 + h))});
+  }
+  const int noise = std::uniform_int_distribution<int>(0, 10)(rng);
+  for (int k = 0; k < noise; ++k) {
+    mask.set(std::uniform_int_distribution<int>(0, columns - 1)(rng),
+             std::uniform_int_distribution<int>(0, rows - 1)(rng));
+  }
+  return mask;
+}
+
+CellSet dense_oracle(const LutSet& luts, const ModelSilhouettes& silhouettes,
+                     const std::vector<CameraObservation>& observations, CellIndex robot_cell,
+                     const FusionSettings& settings) {
+  const std::size_t cameras = observations.size();
+  std::vector<FeatureMask> robot(cameras, FeatureMask(luts.columns, luts.rows));
+  std::vector<FeatureMask> obstacles(cameras, FeatureMask(luts.columns, luts.rows));
+  remove_robot_from_views(observations, silhouettes, robot_cell, settings.removal, robot,
+                          obstacles);
+  const std::uint32_t cells = luts.static_cells.cell_count();
+  CellSet forbidden(cells);
+  for (CellIndex cell = 0; cell < cells; ++cell) {
+    int count = 0;
+    for (std::size_t camera = 0; camera < cameras; ++camera) {
+      FeatureMask silhouette(luts.columns, luts.rows);
+      silhouettes.add_silhouette(cell, camera, silhouette);
+      const bool marks = observations[camera].known ? silhouette.intersects(obstacles[camera])
+                                                    : silhouette.any();
+      count += marks ? 1 : 0;
+    }
+    if (count >= settings.camera_threshold || luts.static_cells.test(cell)) forbidden.set(cell);
+  }
+  return forbidden;
+}
+
+TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
+  const CellModel cell = test::coarse_default_cell();
+  const CspaceGrid grid = make_grid(cell.config);
+  const LutSet luts = build_model_luts(cell, grid);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  test::PropertyRun run(24);
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
+  int nonempty = 0;
+  for (int i = 0; i < run.iterations(); ++i) {
+    FusionSettings settings;
+    settings.camera_threshold = 1 + i % 4;
+    settings.removal = i % 2 == 0 ? RobotRemoval::kOcclusionAware : RobotRemoval::kPlain;
+    std::vector<CameraObservation> observations(luts.cameras.size());
+    for (auto& observation : observations) {
+      observation.known = std::bernoulli_distribution(0.85)(run.rng());
+      observation.blocked = random_blocked(run.rng(), luts.columns, luts.rows);
+    }
+    const CellIndex robot_cell = any_cell(run.rng());
+    ForbiddenMapFusion fast(luts, silhouettes, settings);
+    BaselineFusion baseline(luts, silhouettes, settings);
+    const CellSet& fused = fast.fuse(observations, robot_cell);
+    const CellSet oracle = dense_oracle(luts, silhouettes, observations, robot_cell, settings);
+    ASSERT_EQ(fused, oracle) << "iteration " << i;
+    ASSERT_EQ(baseline.fuse(observations, robot_cell), oracle) << "iteration " << i;
+    EXPECT_EQ(fast.counts().forbidden_cells, fused.count());
+    nonempty += fused.count() > luts.static_cells.count() ? 1 : 0;
+  }
+  EXPECT_GT(nonempty, run.iterations() / 3) << "the random scenes forbid too little to test";
+}
+
+TEST(FusionEquivalence, UnknownCameraMarksEverythingItCanSee) {
+  const CellModel cell = test::coarse_default_cell();
+  const CspaceGrid grid = make_grid(cell.config);
+  const LutSet luts = build_model_luts(cell, grid);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  FusionSettings settings;
+  settings.camera_threshold = 1;
+  ForbiddenMapFusion fusion(luts, silhouettes, settings);
+  std::vector<CameraObservation> observations(luts.cameras.size());
+  for (auto& observation : observations) {
+    observation.known = true;
+    observation.blocked = FeatureMask(luts.columns, luts.rows);
+  }
+  EXPECT_EQ(fusion.fuse(observations, 0), luts.static_cells);  // nothing seen: static only
+  observations[1].known = false;
+  CellSet expected = fusion.observable(1);
+  expected |= luts.static_cells;
+  EXPECT_EQ(fusion.fuse(observations, 0), expected);
+  EXPECT_GT(fusion.observable(1).count(), grid.cell_count() / 2);
+}
+
+TEST(FusionEquivalence, BadInputsAreRefused) {
+  const CellModel cell = test::coarse_default_cell();
+  const CspaceGrid grid = make_grid(cell.config);
+  const LutSet luts = build_model_luts(cell, grid);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  FusionSettings settings;
+  settings.camera_threshold = 5;
+  EXPECT_THROW(ForbiddenMapFusion(luts, silhouettes, settings), std::invalid_argument);
+  settings.camera_threshold = 0;
+  EXPECT_THROW(ForbiddenMapFusion(luts, silhouettes, settings), std::invalid_argument);
+  settings.camera_threshold = 2;
+  ForbiddenMapFusion fusion(luts, silhouettes, settings);
+  std::vector<CameraObservation> three(3, CameraObservation{true, FeatureMask(64, 64)});
+  EXPECT_THROW(fusion.fuse(three, 0), std::invalid_argument);
+  std::vector<CameraObservation> small(4, CameraObservation{true, FeatureMask(32, 32)});
+  EXPECT_THROW(fusion.fuse(small, 0), std::invalid_argument);
+  std::vector<CameraObservation> good(4, CameraObservation{true, FeatureMask(64, 64)});
+  EXPECT_THROW(fusion.fuse(good, grid.cell_count()), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace safecell
