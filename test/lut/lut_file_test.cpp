@@ -1,0 +1,161 @@
+#include "safecell/lut/lut_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "model_fixture.hpp"
+#include "safecell/lut/cell_table_builder.hpp"
+#include "safecell/lut/model_luts.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+
+class LutFile : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    cell_ = new CellModel(test::coarse_default_cell());
+    grid_ = new CspaceGrid(make_grid(cell_->config));
+    set_ = new LutSet(build_model_luts(*cell_, *grid_));
+  }
+  static void TearDownTestSuite() {
+    delete set_;
+    delete grid_;
+    delete cell_;
+  }
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() /
+              ("safecell_lut_file_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+               "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+
+  static std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+  static void write(const fs::path& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  }
+  // The problem text of the refusal, or "" when the file loads.
+  static std::string refusal(const fs::path& path, std::optional<std::uint64_t> fingerprint) {
+    try {
+      (void)load_lut_file(path, *grid_, fingerprint);
+    } catch (const LutFileError& error) {
+      return error.what();
+    }
+    return "";
+  }
+
+  static CellModel* cell_;
+  static CspaceGrid* grid_;
+  static LutSet* set_;
+  fs::path folder_;
+};
+
+CellModel* LutFile::cell_ = nullptr;
+CspaceGrid* LutFile::grid_ = nullptr;
+LutSet* LutFile::set_ = nullptr;
+
+void expect_same(const LutSet& a, const LutSet& b) {
+  EXPECT_EQ(a.fingerprint, b.fingerprint);
+  EXPECT_EQ(a.grid_fingerprint, b.grid_fingerprint);
+  EXPECT_EQ(a.source, b.source);
+  EXPECT_EQ(a.columns, b.columns);
+  EXPECT_EQ(a.rows, b.rows);
+  EXPECT_EQ(a.static_cells, b.static_cells);
+  ASSERT_EQ(a.cameras.size(), b.cameras.size());
+  for (std::size_t c = 0; c < a.cameras.size(); ++c) {
+    const CameraLuts& x = a.cameras[c];
+    const CameraLuts& y = b.cameras[c];
+    EXPECT_EQ(x.camera, y.camera);
+    EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.offsets(), y.pixel_to_cells.offsets()));
+    EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.box_bytes(), y.pixel_to_cells.box_bytes()));
+    EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.offsets(), y.cell_to_pixels.offsets()));
+    EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.rects(), y.cell_to_pixels.rects()));
+  }
+}
+
+TEST_F(LutFile, ModelSetRoundTrips) {
+  const fs::path path = folder_ / "luts.sclut";
+  write_lut_file(path, *set_);
+  const LutSet loaded = load_lut_file(path, *grid_, set_->fingerprint);
+  expect_same(*set_, loaded);
+  const LutFileSummary summary = read_lut_file_summary(path);
+  EXPECT_EQ(summary.camera_count, 4U);
+  EXPECT_EQ(summary.cell_count, grid_->cell_count());
+  EXPECT_EQ(summary.file_bytes, fs::file_size(path));
+}
+
+TEST_F(LutFile, RecordedSetKeepsItsCellTables) {
+  LutSet recorded = *set_;
+  recorded.source = LutSource::kRecorded;
+  CellTableBuild build;
+  build.cell_count = grid_->cell_count();
+  build.camera_count = recorded.cameras.size();
+  build.columns = recorded.columns;
+  build.rows = recorded.rows;
+  const ModelSilhouettes silhouettes(*cell_, *grid_, ModelLutOptions{});
+  auto tables = build_cell_to_pixels_tables(build, [&](CellIndex cell, std::vector<FeatureMask>& masks) {
+    silhouettes.add_silhouettes(cell, masks);
+  });
+  for (std::size_t c = 0; c < tables.size(); ++c) recorded.cameras[c].cell_to_pixels = tables[c];
+  const fs::path path = folder_ / "recorded.sclut";
+  write_lut_file(path, recorded);
+  expect_same(recorded, load_lut_file(path, *grid_, std::nullopt));
+}
+
+TEST_F(LutFile, DamagedAndForeignFilesAreRefused) {
+  const fs::path path = folder_ / "luts.sclut";
+  write_lut_file(path, *set_);
+  const std::string good = read(path);
+
+  EXPECT_NE(refusal(path, set_->fingerprint + 1).find("another robot"), std::string::npos);
+
+  CellConfig finer_config = default_cell();
+  finer_config.m_max_m = 0.35;
+  finer_config.joints.at(3).discretised = false;
+  const CspaceGrid other_grid = make_grid(load_cell_model(finer_config).config);
+  try {
+    (void)load_lut_file(path, other_grid, std::nullopt);
+    ADD_FAILURE() << "a file of another grid was loaded";
+  } catch (const LutFileError& error) {
+    EXPECT_NE(std::string(error.what()).find("another C-space grid"), std::string::npos);
+  }
+
+  std::string flipped = good;
+  flipped[flipped.size() / 2] = static_cast<char>(flipped[flipped.size() / 2] ^ 0x10);
+  write(path, flipped);
+  EXPECT_NE(refusal(path, std::nullopt).find("checksum"), std::string::npos);
+
+  write(path, good.substr(0, good.size() - 100));
+  EXPECT_NE(refusal(path, std::nullopt).find("truncated"), std::string::npos);
+
+  std::string other_version = good;
+  other_version[8] = 9;
+  write(path, other_version);
+  EXPECT_NE(refusal(path, std::nullopt).find("format version 9"), std::string::npos);
+
+  std::string not_ours = good;
+  not_ours[0] = 'X';
+  write(path, not_ours);
+  EXPECT_NE(refusal(path, std::nullopt).find("magic"), std::string::npos);
+
+  write(path, "short");
+  EXPECT_NE(refusal(path, std::nullopt).find("too short"), std::string::npos);
+
+  EXPECT_NE(refusal(folder_ / "missing.sclut", std::nullopt).find("cannot open"),
+            std::string::npos);
+
+  write(path, good);
+  EXPECT_EQ(refusal(path, set_->fingerprint), "");
+}
+
+}  // namespace
+}  // namespace safecell
