@@ -9,6 +9,7 @@
 
 #include "model_fixture.hpp"
 #include "safecell/lut/cell_table_builder.hpp"
+#include "safecell/lut/lut_cache.hpp"
 #include "safecell/lut/model_luts.hpp"
 
 namespace safecell {
@@ -75,6 +76,7 @@ void expect_same(const LutSet& a, const LutSet& b) {
     const CameraLuts& x = a.cameras[c];
     const CameraLuts& y = b.cameras[c];
     EXPECT_EQ(x.camera, y.camera);
+    EXPECT_EQ(x.covered_pairs, y.covered_pairs);
     EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.offsets(), y.pixel_to_cells.offsets()));
     EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.box_bytes(), y.pixel_to_cells.box_bytes()));
     EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.offsets(), y.cell_to_pixels.offsets()));
@@ -91,6 +93,13 @@ TEST_F(LutFile, ModelSetRoundTrips) {
   EXPECT_EQ(summary.camera_count, 4U);
   EXPECT_EQ(summary.cell_count, grid_->cell_count());
   EXPECT_EQ(summary.file_bytes, fs::file_size(path));
+  ASSERT_EQ(summary.cameras.size(), 4U);
+  EXPECT_EQ(summary.cameras[2].name, "cam2");
+  EXPECT_EQ(summary.cameras[2].boxes, set_->cameras[2].pixel_to_cells.total_boxes());
+  EXPECT_EQ(summary.cameras[2].pixel_table_bytes, set_->cameras[2].pixel_to_cells.bytes());
+  EXPECT_EQ(summary.cameras[2].covered_pairs, set_->cameras[2].covered_pairs);
+  EXPECT_GT(summary.cameras[2].covered_pairs, 0U);
+  EXPECT_EQ(summary.cameras[2].cell_table_bytes, 0U);
 }
 
 TEST_F(LutFile, RecordedSetKeepsItsCellTables) {
@@ -155,6 +164,28 @@ TEST_F(LutFile, DamagedAndForeignFilesAreRefused) {
 
   write(path, good);
   EXPECT_EQ(refusal(path, set_->fingerprint), "");
+}
+
+TEST_F(LutFile, CacheBuildsOnceThenLoadsAndReplacesADamagedFile) {
+  const CachedLuts first = model_luts_cached(*cell_, *grid_, ModelLutOptions{}, folder_);
+  EXPECT_TRUE(first.built);
+  EXPECT_TRUE(fs::exists(first.file));
+  const CachedLuts second = model_luts_cached(*cell_, *grid_, ModelLutOptions{}, folder_);
+  EXPECT_FALSE(second.built);
+  EXPECT_EQ(second.file, first.file);
+  expect_same(first.set, second.set);
+
+  std::string damaged = read(first.file);
+  damaged[damaged.size() - 10] = static_cast<char>(damaged[damaged.size() - 10] ^ 1);
+  write(first.file, damaged);
+  const CachedLuts third = model_luts_cached(*cell_, *grid_, ModelLutOptions{}, folder_);
+  EXPECT_TRUE(third.built);
+  EXPECT_NE(third.note.find("checksum"), std::string::npos) << third.note;
+  expect_same(first.set, third.set);
+
+  ModelLutOptions padded;
+  padded.padding_m = 0.05;
+  EXPECT_NE(model_luts_cached(*cell_, *grid_, padded, folder_).file, first.file);
 }
 
 }  // namespace

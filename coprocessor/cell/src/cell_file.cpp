@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "safecell/cell/cell_error.hpp"
+#include "safecell/cell/default_cell.hpp"
 #include "yaml_field.hpp"
 
 namespace safecell {
@@ -281,6 +282,10 @@ CellConfig load_cell_file(const std::filesystem::path& path) {
   text << file.rdbuf();
   if (file.bad()) throw_cell_error(SourceLine{path.string(), 0}, "(file)", "read error");
   return parse_cell_yaml(text.str(), path.string(), path.parent_path());
+}
+
+CellConfig load_cell_file_or_default(const std::string& path) {
+  return path.empty() ? default_cell() : load_cell_file(path);
 }
 
 }  // namespace safecell

@@ -7,7 +7,6 @@
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cell/cell_model.hpp"
-#include "safecell/cell/default_cell.hpp"
 #include "safecell/cli/text_table.hpp"
 
 namespace safecell {
@@ -97,7 +96,7 @@ void print_text(const CellModel& model, const CspaceGrid& grid, std::ostream& ou
 
 void run_cell_info(const CellInfoOptions& options, std::ostream& out) {
   const CellModel model = load_cell_model(
-      options.cell_path.empty() ? default_cell() : load_cell_file(options.cell_path));
+      load_cell_file_or_default(options.cell_path));
   const CspaceGrid grid = make_grid(model.config);
   if (options.json) {
     out << to_json(model, grid).dump(2) << '\n';

@@ -8,7 +8,6 @@
 #include "png_output.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_model.hpp"
-#include "safecell/cell/default_cell.hpp"
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/features/noise_bits.hpp"
@@ -83,7 +82,7 @@ cv::Mat blocked_overlay(const cv::Mat& frame, const cv::Mat& blocked, const Feat
 
 void run_images_show(const ImagesShowOptions& options, std::ostream& out) {
   const CellModel model = load_cell_model(
-      options.cell_path.empty() ? default_cell() : load_cell_file(options.cell_path));
+      load_cell_file_or_default(options.cell_path));
   if (options.reference_frames < 1 ||
       options.reference_frames > static_cast<int>(kCandidateConfigurations)) {
     bad_option("--reference-frames", std::to_string(options.reference_frames),

@@ -6,7 +6,6 @@
 #include "png_output.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_model.hpp"
-#include "safecell/cell/default_cell.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/robot/kinematics.hpp"
 #include "safecell/sim/cell_simulation.hpp"
@@ -17,7 +16,7 @@ namespace safecell {
 
 void run_sim_render(const SimRenderOptions& options, std::ostream& out) {
   const CellModel model = load_cell_model(
-      options.cell_path.empty() ? default_cell() : load_cell_file(options.cell_path));
+      load_cell_file_or_default(options.cell_path));
   if (!(options.noise_sigma >= 0.0 && options.noise_sigma <= 50.0)) {
     bad_option("--noise", std::to_string(options.noise_sigma), "expected 0 to 50 gray levels");
   }

@@ -53,6 +53,14 @@ void CellToPixelsTable::add_to(CellIndex cell, FeatureMask& mask) const {
   for (const auto& rect : rects_of(cell)) mask.set_rect(rect);
 }
 
+std::uint64_t CellToPixelsTable::covered_pairs() const {
+  std::uint64_t pairs = 0;
+  for (const auto& rect : rects_) {
+    pairs += std::uint64_t{rect.col1 - rect.col0 + 1U} * std::uint64_t{rect.row1 - rect.row0 + 1U};
+  }
+  return pairs;
+}
+
 FeatureMask CellToPixelsTable::mask_of(CellIndex cell) const {
   FeatureMask mask(columns_, rows_);
   add_to(cell, mask);

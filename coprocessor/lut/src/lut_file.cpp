@@ -29,6 +29,7 @@ enum class SectionKind : std::uint32_t {
   kCellOffsets = 4,
   kCellRects = 5,
   kStaticCells = 6,
+  kCameraStats = 7,
 };
 
 struct Header {
@@ -184,6 +185,7 @@ void write_lut_file(const std::filesystem::path& path, const LutSet& set) {
     const auto camera = static_cast<std::uint32_t>(c);
     const CameraLuts& luts = set.cameras[c];
     image.add(SectionKind::kCameraName, camera, luts.camera.data(), luts.camera.size());
+    image.add(SectionKind::kCameraStats, camera, &luts.covered_pairs, sizeof(luts.covered_pairs));
     image.add(SectionKind::kPixelOffsets, camera, luts.pixel_to_cells.offsets());
     image.add(SectionKind::kPixelBoxes, camera, luts.pixel_to_cells.box_bytes());
     if (luts.cell_to_pixels.cell_count() > 0) {
@@ -220,6 +222,46 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
   summary.camera_count = header.camera_count;
   summary.cell_count = header.cell_count;
   summary.file_bytes = header.file_bytes;
+  summary.cameras.resize(header.camera_count);
+  const auto entries = section_span<SectionEntry>(
+      path, mapping,
+      SectionEntry{0, kNoCamera, header.section_table_offset,
+                   std::uint64_t{header.section_count} * sizeof(SectionEntry)});
+  for (const auto& entry : entries) {
+    if (entry.camera == kNoCamera) continue;
+    if (entry.camera >= summary.cameras.size()) {
+      throw LutFileError(path, "a section names camera " + std::to_string(entry.camera));
+    }
+    LutFileSummary::Camera& camera = summary.cameras[entry.camera];
+    switch (static_cast<SectionKind>(entry.kind)) {
+      case SectionKind::kCameraName: {
+        const auto name = section_span<char>(path, mapping, entry);
+        camera.name.assign(name.begin(), name.end());
+        break;
+      }
+      case SectionKind::kCameraStats: {
+        const auto stats = section_span<std::uint64_t>(path, mapping, entry);
+        if (stats.size() != 1) throw LutFileError(path, "camera statistics of the wrong size");
+        camera.covered_pairs = stats[0];
+        break;
+      }
+      case SectionKind::kPixelOffsets: {
+        const auto offsets = section_span<std::uint64_t>(path, mapping, entry);
+        camera.boxes = offsets.empty() ? 0 : offsets.back();
+        camera.pixel_table_bytes += entry.bytes;
+        break;
+      }
+      case SectionKind::kPixelBoxes:
+        camera.pixel_table_bytes += entry.bytes;
+        break;
+      case SectionKind::kCellOffsets:
+      case SectionKind::kCellRects:
+        camera.cell_table_bytes += entry.bytes;
+        break;
+      default:
+        throw LutFileError(path, "unknown section kind " + std::to_string(entry.kind));
+    }
+  }
   return summary;
 }
 
@@ -252,6 +294,7 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     const SectionEntry* pixel_boxes = nullptr;
     const SectionEntry* cell_offsets = nullptr;
     const SectionEntry* cell_rects = nullptr;
+    const SectionEntry* stats = nullptr;
   };
   std::vector<CameraSections> cameras(header.camera_count);
   const SectionEntry* static_cells = nullptr;
@@ -271,6 +314,7 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
       case SectionKind::kPixelBoxes: sections.pixel_boxes = &entry; break;
       case SectionKind::kCellOffsets: sections.cell_offsets = &entry; break;
       case SectionKind::kCellRects: sections.cell_rects = &entry; break;
+      case SectionKind::kCameraStats: sections.stats = &entry; break;
       default:
         throw LutFileError(path, "unknown section kind " + std::to_string(entry.kind));
     }
@@ -292,7 +336,7 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     const CameraSections& sections = cameras[c];
     if (sections.name == nullptr || sections.pixel_offsets == nullptr ||
-        sections.pixel_boxes == nullptr) {
+        sections.pixel_boxes == nullptr || sections.stats == nullptr) {
       throw LutFileError(path, "camera " + std::to_string(c) + " lacks its LUT-2 sections");
     }
     if (set.source == LutSource::kRecorded &&
@@ -302,6 +346,9 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     const auto name = section_span<char>(path, *mapping, *sections.name);
     CameraLuts luts;
     luts.camera.assign(name.begin(), name.end());
+    const auto stats = section_span<std::uint64_t>(path, *mapping, *sections.stats);
+    if (stats.size() != 1) throw LutFileError(path, "camera statistics of the wrong size");
+    luts.covered_pairs = stats[0];
     try {
       luts.pixel_to_cells = PixelToCellsTable(
           grid, set.columns, set.rows,

@@ -12,4 +12,9 @@ const char* to_string(LutSource source) {
   return "unknown";
 }
 
+std::uint64_t uncompressed_bytes(std::uint64_t covered_pairs, std::uint32_t cell_count,
+                                 std::size_t pixel_count) {
+  return covered_pairs * (2 + 4) + std::uint64_t{cell_count} * 8 + std::uint64_t{pixel_count} * 8;
+}
+
 }  // namespace safecell

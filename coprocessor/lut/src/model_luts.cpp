@@ -111,9 +111,10 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
     };
     PixelToCellsTable pixel_table =
         build_pixel_to_cells_table(cell_tables[camera], grid, pixel_build, inversion);
+    const std::uint64_t pairs = cell_tables[camera].covered_pairs();
     cell_tables[camera] = CellToPixelsTable{};  // computed from the model when needed
     set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), CellToPixelsTable{},
-                                     std::move(pixel_table)});
+                                     std::move(pixel_table), pairs});
   }
   set.static_cells =
       static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads, stage(2));

@@ -19,4 +19,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
 // As parse_cell_yaml(), reading the file first; a file that cannot be read is a CellError too.
 CellConfig load_cell_file(const std::filesystem::path& path);
 
+// The cell file at `path`, or the built-in default cell when `path` is empty (the commands'
+// --cell option).
+CellConfig load_cell_file_or_default(const std::string& path);
+
 }  // namespace safecell

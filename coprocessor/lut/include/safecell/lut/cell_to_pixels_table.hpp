@@ -39,6 +39,8 @@ class CellToPixelsTable {
   // Adds the cell's feature cells to `mask` (precondition: the table's size, cell < cell_count).
   void add_to(CellIndex cell, FeatureMask& mask) const;
   [[nodiscard]] FeatureMask mask_of(CellIndex cell) const;
+  // (cell, feature cell) pairs: the entries an uncompressed LUT-1 would hold.
+  [[nodiscard]] std::uint64_t covered_pairs() const;
 
   [[nodiscard]] std::span<const std::uint64_t> offsets() const { return offsets_; }
   [[nodiscard]] std::span<const FeatureRect> rects() const { return rects_; }

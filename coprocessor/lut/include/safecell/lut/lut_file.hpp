@@ -17,6 +17,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/lut/lut_set.hpp"
@@ -42,6 +43,15 @@ struct LutFileSummary {
   std::uint32_t camera_count = 0;
   std::uint32_t cell_count = 0;
   std::uint64_t file_bytes = 0;
+
+  struct Camera {
+    std::string name;
+    std::uint64_t cell_table_bytes = 0;   // LUT-1 (0 in a model-mode set)
+    std::uint64_t pixel_table_bytes = 0;  // LUT-2
+    std::uint64_t boxes = 0;
+    std::uint64_t covered_pairs = 0;
+  };
+  std::vector<Camera> cameras;
 };
 
 // Writes the set atomically (temporary file, then rename). Throws FileError when it cannot.

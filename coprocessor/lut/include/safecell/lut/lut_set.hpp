@@ -22,7 +22,15 @@ struct CameraLuts {
   // LUT-1; empty in a model-mode set (ModelSilhouettes computes it from the model).
   CellToPixelsTable cell_to_pixels;
   PixelToCellsTable pixel_to_cells;  // LUT-2
+  // (cell, feature cell) pairs the tables hold: what the paper's uncompressed layout stores.
+  std::uint64_t covered_pairs = 0;
 };
+
+// Bytes of the paper's uncompressed layout for one camera: LUT-1 with a 2-byte pixel number per
+// pair and LUT-2 with a 4-byte cell number per pair (more than 65536 cells), plus an 8-byte offset
+// per cell and per pixel.
+[[nodiscard]] std::uint64_t uncompressed_bytes(std::uint64_t covered_pairs,
+                                               std::uint32_t cell_count, std::size_t pixel_count);
 
 struct LutSet {
   // Hash of the grid, the robot's geometry, the cameras' calibration, the feature grid, the
