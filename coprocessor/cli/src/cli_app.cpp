@@ -7,8 +7,10 @@
 #include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
 #include "safecell/cli/images_show_command.hpp"
+#include "safecell/cli/luts_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/files/atomic_write.hpp"
+#include "safecell/lut/lut_file.hpp"
 
 namespace safecell {
 namespace {
@@ -82,6 +84,39 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->capture_default_str();
   show_command->callback([&] { action = [&] { run_images_show(show, out); }; });
 
+  CLI::App* luts = app.add_subcommand("luts", "The look-up tables (LUT-1, LUT-2) of a cell");
+  luts->require_subcommand(1);
+  LutsBuildOptions build;
+  CLI::App* build_command = luts->add_subcommand(
+      "build",
+      "Build the tables of a cell from its robot model and camera calibrations (model mode) into "
+      "a folder, one file per fingerprint; a file already there is kept");
+  build_command->add_option("--cell", build.cell_path,
+                            "Cell file (YAML); without it the built-in default cell");
+  build_command->add_option("--out", build.out_dir,
+                            "Folder for the LUT file; without it the cache folder "
+                            "($SAFECELL_CACHE or ~/.cache/safecell)");
+  build_command->add_option("--ball-radius", build.ball_radius_m,
+                            "Size of the balls covering the robot, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.005, 0.5));
+  build_command->add_option("--padding", build.padding_m,
+                            "Margin added all round the robot, metres (calibration error)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  build_command->add_option("--threads", build.threads, "Worker threads; 0: one per core")
+      ->capture_default_str();
+  build_command->add_flag("--force", build.force, "Build again even when the file exists");
+  build_command->add_flag("--json", build.json, "Print one JSON object instead of a table");
+  build_command->callback([&] { action = [&] { run_luts_build(build, out, err); }; });
+  LutsInfoOptions lut_info;
+  CLI::App* info_command = luts->add_subcommand(
+      "info", "What a LUT file holds: sizes per camera, compression, cells, fingerprint");
+  info_command->add_option("path", lut_info.path, "A LUT file (*.sclut) or a folder of them")
+      ->required();
+  info_command->add_flag("--json", lut_info.json, "Print JSON instead of a table");
+  info_command->callback([&] { action = [&] { run_luts_info(lut_info, out); }; });
+
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(
       "bench", "Run the project's benchmarks on the default cell (median and worst case)");
@@ -104,6 +139,9 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const FileError& error) {
+    err << "error: " << error.what() << '\n';
+    return kExitBadInput;
+  } catch (const LutFileError& error) {
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const std::exception& error) {

@@ -23,14 +23,19 @@ std::filesystem::path default_lut_cache_folder() {
   return ".safecell-cache";
 }
 
+std::filesystem::path lut_cache_file(const std::filesystem::path& folder,
+                                     std::uint64_t fingerprint) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%016llx.sclut", static_cast<unsigned long long>(fingerprint));
+  return folder / name;
+}
+
 CachedLuts model_luts_cached(const CellModel& cell, const CspaceGrid& grid,
                              const ModelLutOptions& options, const std::filesystem::path& folder,
                              const StagedProgress& progress) {
   const std::uint64_t fingerprint = model_lut_fingerprint(cell, grid, options);
-  char name[32];
-  std::snprintf(name, sizeof name, "%016llx.sclut", static_cast<unsigned long long>(fingerprint));
   CachedLuts result;
-  result.file = folder / name;
+  result.file = lut_cache_file(folder, fingerprint);
   std::error_code error;
   if (std::filesystem::exists(result.file, error)) {
     try {

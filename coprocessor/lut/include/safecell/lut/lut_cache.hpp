@@ -13,6 +13,10 @@ namespace safecell {
 // ./.safecell-cache.
 [[nodiscard]] std::filesystem::path default_lut_cache_folder();
 
+// `<folder>/<fingerprint as 16 hex digits>.sclut`.
+[[nodiscard]] std::filesystem::path lut_cache_file(const std::filesystem::path& folder,
+                                                   std::uint64_t fingerprint);
+
 struct CachedLuts {
   LutSet set;
   std::filesystem::path file;

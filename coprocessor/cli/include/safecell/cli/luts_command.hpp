@@ -1,0 +1,30 @@
+#pragma once
+// `safecell luts build` and `safecell luts info`: the look-up tables of a cell (model mode), built
+// into a folder (a file per fingerprint, as the cache keeps them), and what a LUT file holds.
+
+#include <ostream>
+#include <string>
+
+namespace safecell {
+
+struct LutsBuildOptions {
+  std::string cell_path;  // empty: the built-in default cell
+  std::string out_dir;    // empty: the cache folder
+  double ball_radius_m = 0.06;
+  double padding_m = 0.02;
+  unsigned threads = 0;
+  bool force = false;  // build even when the folder holds the tables already
+  bool json = false;
+};
+
+struct LutsInfoOptions {
+  std::string path;  // a LUT file, or a folder of them
+  bool json = false;
+};
+
+void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err);
+// Throws LutFileError for a file that is not a usable LUT file, std::invalid_argument for a
+// folder without any.
+void run_luts_info(const LutsInfoOptions& options, std::ostream& out);
+
+}  // namespace safecell

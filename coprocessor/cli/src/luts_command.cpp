@@ -1,0 +1,175 @@
+#include "safecell/cli/luts_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <vector>
+
+#include "progress_bar.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/cell/cell_model.hpp"
+#include "safecell/cli/text_table.hpp"
+#include "safecell/lut/lut_cache.hpp"
+#include "safecell/lut/lut_file.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The paper's figure for its uncompressed tables: about 50 MB per camera (§5).
+constexpr double kPaperBytesPerCamera = 50e6;
+
+const char* const kStageNames[kLutBuildStages] = {"LUT-1 silhouettes", "LUT-2 inversion",
+                                                  "static obstacles"};
+
+std::string hex64(std::uint64_t value) {
+  char text[19];
+  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+std::string megabytes(std::uint64_t bytes) { return fixed(static_cast<double>(bytes) / 1e6, 2); }
+
+std::vector<fs::path> lut_files_in(const fs::path& path) {
+  if (!fs::is_directory(path)) return {path};
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(path)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".sclut") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) {
+    throw std::invalid_argument("folder '" + path.string() + "' holds no LUT file (*.sclut)");
+  }
+  return files;
+}
+
+nlohmann::ordered_json summary_json(const fs::path& path, const LutFileSummary& summary) {
+  const std::size_t pixels =
+      static_cast<std::size_t>(summary.columns) * static_cast<std::size_t>(summary.rows);
+  nlohmann::ordered_json cameras = nlohmann::ordered_json::array();
+  std::uint64_t stored = 0;
+  std::uint64_t uncompressed = 0;
+  for (const auto& camera : summary.cameras) {
+    const std::uint64_t camera_stored = camera.cell_table_bytes + camera.pixel_table_bytes;
+    const std::uint64_t camera_uncompressed =
+        uncompressed_bytes(camera.covered_pairs, summary.cell_count, pixels);
+    stored += camera_stored;
+    uncompressed += camera_uncompressed;
+    cameras.push_back({{"name", camera.name},
+                       {"lut1_bytes", camera.cell_table_bytes},
+                       {"lut2_bytes", camera.pixel_table_bytes},
+                       {"lut2_boxes", camera.boxes},
+                       {"covered_pairs", camera.covered_pairs},
+                       {"uncompressed_bytes", camera_uncompressed},
+                       {"compression_ratio", static_cast<double>(camera_uncompressed) /
+                                                 static_cast<double>(std::max<std::uint64_t>(camera_stored, 1))}});
+  }
+  const double camera_count = std::max<double>(1.0, static_cast<double>(summary.cameras.size()));
+  nlohmann::ordered_json report;
+  report["file"] = path.string();
+  report["format_version"] = summary.version;
+  report["source"] = to_string(summary.source);
+  report["fingerprint"] = hex64(summary.fingerprint);
+  report["grid_fingerprint"] = hex64(summary.grid_fingerprint);
+  report["cells"] = summary.cell_count;
+  report["feature_grid"] = {summary.columns, summary.rows};
+  report["file_bytes"] = summary.file_bytes;
+  report["bytes_per_camera"] = static_cast<double>(stored) / camera_count;
+  report["uncompressed_bytes_per_camera"] = static_cast<double>(uncompressed) / camera_count;
+  report["paper_bytes_per_camera"] = kPaperBytesPerCamera;
+  report["compression_ratio"] =
+      static_cast<double>(uncompressed) / static_cast<double>(std::max<std::uint64_t>(stored, 1));
+  report["cameras"] = std::move(cameras);
+  return report;
+}
+
+void print_summary(const nlohmann::ordered_json& report, std::ostream& out) {
+  out << "LUT file " << report["file"].get<std::string>() << " (format "
+      << report["format_version"].get<int>() << ", " << report["source"].get<std::string>()
+      << " mode)\n"
+      << "  fingerprint " << report["fingerprint"].get<std::string>() << ", grid "
+      << report["grid_fingerprint"].get<std::string>() << "\n"
+      << "  " << grouped(report["cells"].get<unsigned long long>()) << " C-space cells, "
+      << report["feature_grid"][0].get<int>() << " x " << report["feature_grid"][1].get<int>()
+      << " feature cells, " << report["cameras"].size() << " cameras, "
+      << megabytes(report["file_bytes"].get<std::uint64_t>()) << " MB on disk\n";
+  using Align = TextTable::Align;
+  TextTable table({{"camera", Align::kLeft},
+                   {"LUT-1 [MB]", Align::kRight},
+                   {"LUT-2 [MB]", Align::kRight},
+                   {"LUT-2 boxes", Align::kRight},
+                   {"uncompressed [MB]", Align::kRight},
+                   {"ratio", Align::kRight}});
+  for (const auto& camera : report["cameras"]) {
+    table.add_row({camera["name"].get<std::string>(),
+                   megabytes(camera["lut1_bytes"].get<std::uint64_t>()),
+                   megabytes(camera["lut2_bytes"].get<std::uint64_t>()),
+                   grouped(camera["lut2_boxes"].get<unsigned long long>()),
+                   megabytes(camera["uncompressed_bytes"].get<std::uint64_t>()),
+                   fixed(camera["compression_ratio"].get<double>(), 1) + "x"});
+  }
+  table.print(out);
+  out << "  per camera: " << fixed(report["bytes_per_camera"].get<double>() / 1e6, 2)
+      << " MB stored, " << fixed(report["uncompressed_bytes_per_camera"].get<double>() / 1e6, 1)
+      << " MB uncompressed, the paper's about "
+      << fixed(report["paper_bytes_per_camera"].get<double>() / 1e6, 0) << " MB\n";
+  if (report["source"] == "model") {
+    out << "  (model mode: LUT-1 is computed from the robot model for the robot's cell each "
+           "cycle, so the file holds LUT-2 and the static obstacles)\n";
+  }
+}
+
+}  // namespace
+
+void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err) {
+  const CellModel cell = load_cell_model(load_cell_file_or_default(options.cell_path));
+  const CspaceGrid grid = make_grid(cell.config);
+  ModelLutOptions lut_options;
+  lut_options.ball_radius_m = options.ball_radius_m;
+  lut_options.padding_m = options.padding_m;
+  lut_options.threads = options.threads;
+  const fs::path folder = options.out_dir.empty() ? default_lut_cache_folder() : fs::path(options.out_dir);
+  if (options.force) {
+    std::error_code ignored;
+    fs::remove(lut_cache_file(folder, model_lut_fingerprint(cell, grid, lut_options)), ignored);
+  }
+  ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
+  const CachedLuts luts = model_luts_cached(cell, grid, lut_options, folder,
+                                            [&bar](int stage, double fraction) {
+                                              bar.update(kStageNames[stage], fraction);
+                                            });
+  bar.finish();
+  if (!luts.note.empty()) err << luts.note << '\n';
+  nlohmann::ordered_json report = summary_json(luts.file, read_lut_file_summary(luts.file));
+  report["built"] = luts.built;
+  report["build_s"] = luts.build_s;
+  if (options.json) {
+    out << report.dump(2) << '\n';
+    return;
+  }
+  out << (luts.built ? "built in " + fixed(luts.build_s, 1) + " s: "
+                     : "already built (use --force to build again): ")
+      << luts.file.string() << "\n";
+  print_summary(report, out);
+}
+
+void run_luts_info(const LutsInfoOptions& options, std::ostream& out) {
+  nlohmann::ordered_json reports = nlohmann::ordered_json::array();
+  for (const auto& file : lut_files_in(options.path)) {
+    const nlohmann::ordered_json report = summary_json(file, read_lut_file_summary(file));
+    if (options.json) {
+      reports.push_back(report);
+    } else {
+      print_summary(report, out);
+    }
+  }
+  if (options.json) out << (reports.size() == 1 ? reports[0] : reports).dump(2) << '\n';
+}
+
+}  // namespace safecell

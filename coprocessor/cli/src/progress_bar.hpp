@@ -1,0 +1,39 @@
+#pragma once
+// A progress bar for long work, on the error stream: redrawn in place (at most ten times a
+// second) on a terminal, one line per quarter in a log. Shows the stage, the share done and the
+// time left at the current pace. Private to the CLI.
+
+#include <chrono>
+#include <ostream>
+#include <string>
+
+namespace safecell {
+
+class ProgressBar {
+ public:
+  // interactive: redraw in place (a terminal); otherwise print plain lines.
+  ProgressBar(std::ostream& out, bool interactive);
+  ~ProgressBar();
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+  void update(const std::string& stage, double fraction_done);
+  // Ends the current line.
+  void finish();
+
+  // Whether the process's standard error is a terminal.
+  static bool stderr_is_terminal();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  std::ostream& out_;
+  bool interactive_;
+  std::string stage_;
+  Clock::time_point stage_start_;
+  Clock::time_point last_draw_;
+  int last_quarter_ = -1;
+  bool line_open_ = false;
+};
+
+}  // namespace safecell

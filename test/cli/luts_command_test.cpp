@@ -1,0 +1,86 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_run.hpp"
+#include "safecell/cell/default_cell.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The default cell on a coarse grid (m_max 0.4 m, joint 4 swept), so the build takes a moment.
+fs::path write_coarse_cell(const fs::path& folder) {
+  std::string yaml(default_cell_yaml());
+  const auto replace = [&yaml](const std::string& from, const std::string& to) {
+    const auto at = yaml.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+  };
+  replace("m_max_m: 0.18", "m_max_m: 0.4");
+  replace("range_deg: [-240, 240]\n    discretised: true", "range_deg: [-240, 240]\n    discretised: false");
+  const fs::path path = folder / "coarse.yaml";
+  std::ofstream(path) << yaml;
+  return path;
+}
+
+class LutsCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() / ("safecell-luts-command-" + std::to_string(::getpid()));
+    fs::remove_all(folder_);
+    fs::create_directories(folder_);
+    cell_ = write_coarse_cell(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+
+  fs::path folder_;
+  fs::path cell_;
+};
+
+TEST_F(LutsCommand, BuildsOnceAndReportsSizes) {
+  const fs::path out = folder_ / "luts";
+  const auto first = test::safecell_cli(
+      {"luts", "build", "--cell", cell_.string(), "--out", out.string(), "--json"});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const auto report = nlohmann::json::parse(first.out);
+  EXPECT_TRUE(report["built"].get<bool>());
+  EXPECT_EQ(report["cameras"].size(), 4U);
+  EXPECT_GT(report["bytes_per_camera"].get<double>(), 0.0);
+  EXPECT_GT(report["compression_ratio"].get<double>(), 1.0);
+  EXPECT_TRUE(fs::exists(report["file"].get<std::string>()));
+
+  const auto second = test::safecell_cli(
+      {"luts", "build", "--cell", cell_.string(), "--out", out.string(), "--json"});
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_FALSE(nlohmann::json::parse(second.out)["built"].get<bool>());
+
+  const auto info = test::safecell_cli({"luts", "info", out.string()});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("cam3"), std::string::npos);
+  EXPECT_NE(info.out.find("model mode"), std::string::npos);
+}
+
+TEST_F(LutsCommand, RefusesWhatIsNotALutFile) {
+  const fs::path bogus = folder_ / "bogus.sclut";
+  std::ofstream(bogus) << std::string(200, 'x');
+  const auto garbage = test::safecell_cli({"luts", "info", bogus.string()});
+  EXPECT_EQ(garbage.exit_code, 2);
+  EXPECT_NE(garbage.err.find("not a safecell LUT file"), std::string::npos) << garbage.err;
+
+  fs::create_directories(folder_ / "empty");
+  const auto empty = test::safecell_cli({"luts", "info", (folder_ / "empty").string()});
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("holds no LUT file"), std::string::npos) << empty.err;
+
+  const auto absurd = test::safecell_cli({"luts", "build", "--cell", cell_.string(), "--out",
+                                          folder_.string(), "--ball-radius", "3"});
+  EXPECT_NE(absurd.exit_code, 0);
+}
+
+}  // namespace
+}  // namespace safecell
