@@ -38,18 +38,40 @@ TEST(RobotRemoval, AHumanBehindTheRobotIsKeptWhole) {
   outside.subtract(silhouette);
   EXPECT_EQ(plain, outside) << "plain removal erases the hidden part";
 
-  FeatureMask aware;
-  remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, aware);
+  // With a reach as wide as the image the whole person is kept, and the arm it touches as well
+  // (it may hide the person); silhouette cells that are not blocked stay free.
+  FeatureMask unbounded;
+  remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, unbounded, 64);
   FeatureMask person_part = person;
-  person_part &= aware;
+  person_part &= unbounded;
   EXPECT_EQ(person_part, person) << "the whole person is kept";
-  // The arm touches the person's blob, so it may hide the person: it is kept too (blocked and
-  // connected). Silhouette cells that are not blocked stay free.
-  FeatureMask expected = blocked;
-  EXPECT_EQ(aware, expected);
+  EXPECT_EQ(unbounded, blocked);
   FeatureMask free_in_silhouette = silhouette;
   free_in_silhouette.subtract(blocked);
-  EXPECT_FALSE(aware.intersects(free_in_silhouette));
+  EXPECT_FALSE(unbounded.intersects(free_in_silhouette));
+
+  // The default reach keeps the hidden cells within three steps of the visible part only.
+  FeatureMask bounded;
+  remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, bounded);
+  EXPECT_TRUE(bounded.test(28, 35));   // 3 columns in from the visible part at column 31
+  EXPECT_TRUE(bounded.test(25, 38));   // 3 rows up from the visible part at row 41
+  EXPECT_FALSE(bounded.test(27, 35));  // 4 steps in
+  EXPECT_FALSE(bounded.test(15, 15));  // the arm far from the person
+  FeatureMask visible_part = outside;
+  visible_part &= bounded;
+  EXPECT_EQ(visible_part, outside);
+}
+
+TEST(RobotRemoval, ReachZeroIsPlainRemoval) {
+  const FeatureMask silhouette = rect_mask(64, 64, {{10, 10, 30, 40}});
+  FeatureMask blocked = rect_mask(64, 64, {{12, 12, 25, 38}, {20, 30, 40, 50}});
+  FeatureMask plain;
+  FeatureMask zero;
+  remove_robot(blocked, silhouette, RobotRemoval::kPlain, plain);
+  remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, zero, 0);
+  EXPECT_EQ(plain, zero);
+  EXPECT_THROW(remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, zero, -1),
+               std::invalid_argument);
 }
 
 TEST(RobotRemoval, SeparateBlobsInsideTheSilhouetteAreDropped) {
@@ -60,7 +82,7 @@ TEST(RobotRemoval, SeparateBlobsInsideTheSilhouetteAreDropped) {
   blocked.set(70, 9);  // diagonal neighbour of (71, 8)
   blocked.set(69, 10);
   FeatureMask aware;
-  remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, aware);
+  remove_robot(blocked, silhouette, RobotRemoval::kOcclusionAware, aware, 64);
   EXPECT_TRUE(aware.test(70, 9));
   EXPECT_TRUE(aware.test(69, 10));
   EXPECT_FALSE(aware.test(15, 4));

@@ -6,6 +6,7 @@
 namespace safecell {
 
 void register_feature_benchmarks();  // feature_benchmarks.cpp
+void register_fusion_benchmarks();   // fusion_benchmarks.cpp
 void register_render_benchmarks();   // render_benchmarks.cpp
 
 namespace {
@@ -78,6 +79,7 @@ void register_benchmark(const char* name, void (*function)(benchmark::State&),
 void register_project_benchmarks() {
   static const bool registered = [] {
     register_feature_benchmarks();
+    register_fusion_benchmarks();
     register_render_benchmarks();
     return true;
   }();

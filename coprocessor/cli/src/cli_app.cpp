@@ -9,6 +9,7 @@
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
+#include "safecell/cli/validate_command.hpp"
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/lut/lut_file.hpp"
 
@@ -117,6 +118,35 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   info_command->add_flag("--json", lut_info.json, "Print JSON instead of a table");
   info_command->callback([&] { action = [&] { run_luts_info(lut_info, out); }; });
 
+  ValidateOptions validate;
+  CLI::App* validate_command = app.add_subcommand(
+      "validate",
+      "Run the sensing pipeline on random simulated scenes and compare the forbidden map with "
+      "the exact collisions (FCL); fails when a collision with a seen obstacle is not forbidden");
+  validate_command->add_option("--cell", validate.cell_path,
+                               "Cell file (YAML); without it the built-in default cell");
+  validate_command->add_option("--scenes", validate.scenes, "Random scenes")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  validate_command->add_option("--seed", validate.seed, "Seed of the scenes")->capture_default_str();
+  validate_command->add_option("--configs", validate.configurations,
+                               "Robot configurations checked per scene")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  validate_command->add_option("--humans", validate.humans, "At most this many humans per scene")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
+  validate_command->add_option("--removal", validate.removal,
+                               "Robot removal: occlusion-aware or plain")
+      ->capture_default_str();
+  validate_command->add_option("--lut-cache", validate.lut_cache,
+                               "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                               "~/.cache/safecell");
+  validate_command->add_flag("--json", validate.json, "Print one JSON object instead of text");
+  int exit_code = 0;
+  validate_command->callback(
+      [&] { action = [&] { exit_code = run_validate(validate, out, err); }; });
+
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(
       "bench", "Run the project's benchmarks on the default cell (median and worst case)");
@@ -131,7 +161,7 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   }
   try {
     action();
-    return 0;
+    return exit_code;
   } catch (const CellError& error) {
     err << "error: " << error.what() << '\n';
     return kExitBadInput;

@@ -34,7 +34,7 @@ CellSet observable_cells(const PixelToCellsTable& table) {
 
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
                              const RobotSilhouettes& silhouettes, CellIndex robot_cell,
-                             RobotRemoval removal, std::vector<FeatureMask>& robot,
+                             const FusionSettings& settings, std::vector<FeatureMask>& robot,
                              std::vector<FeatureMask>& obstacles) {
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {
@@ -43,7 +43,8 @@ void remove_robot_from_views(const std::vector<CameraObservation>& observations,
     }
     robot[camera].clear();
     silhouettes.add_silhouette(robot_cell, camera, robot[camera]);
-    remove_robot(observations[camera].blocked, robot[camera], removal, obstacles[camera]);
+    remove_robot(observations[camera].blocked, robot[camera], settings.removal, obstacles[camera],
+                 settings.occlusion_reach);
   }
 }
 
@@ -60,6 +61,10 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     throw std::invalid_argument("camera threshold " + std::to_string(settings.camera_threshold) +
                                 " outside 1.." + std::to_string(luts.cameras.size()) +
                                 " (the number of cameras)");
+  }
+  if (settings.occlusion_reach < 0) {
+    throw std::invalid_argument("occlusion reach must be >= 0 feature cells, got " +
+                                std::to_string(settings.occlusion_reach));
   }
   const std::uint32_t cells = luts.static_cells.cell_count();
   for (const auto& camera : luts.cameras) {
@@ -102,8 +107,7 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
   if (robot_cell >= critical_.cell_count()) {
     throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
   }
-  remove_robot_from_views(observations, silhouettes_, robot_cell, settings_.removal, robot_,
-                          obstacles_);
+  remove_robot_from_views(observations, silhouettes_, robot_cell, settings_, robot_, obstacles_);
   camera_sets_.clear();
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {

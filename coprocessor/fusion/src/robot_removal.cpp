@@ -1,13 +1,15 @@
 #include "safecell/fusion/robot_removal.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace safecell {
 namespace {
 
-// One 8-neighbour dilation step of `from`, limited to `within`, ORed into `into`. Returns whether
-// `into` grew.
-bool grow_within(const FeatureMask& from, const FeatureMask& within, FeatureMask& into) {
+// One 8-neighbour dilation step of `from`, limited to `within` and to cells not yet in `into`:
+// the new cells are written to `grown` and added to `into`. Returns whether there were any.
+bool grow_within(const FeatureMask& from, const FeatureMask& within, FeatureMask& into,
+                 FeatureMask& grown) {
   bool grew = false;
   const int words = from.words_per_row();
   for (int row = 0; row < from.rows(); ++row) {
@@ -23,12 +25,11 @@ bool grow_within(const FeatureMask& from, const FeatureMask& within, FeatureMask
         reach |= centre | (centre << 1) | from_left | (centre >> 1) | from_right;
       }
       const std::uint64_t added = reach & within.row_words(row)[word] & ~into.row_words(row)[word];
-      if (added != 0) {
-        into.row_words(row)[word] |= added;
-        grew = true;
-      }
+      grown.row_words(row)[word] = added;
+      grew = grew || added != 0;
     }
   }
+  into |= grown;
   return grew;
 }
 
@@ -45,17 +46,26 @@ const char* to_string(RobotRemoval removal) {
 }
 
 void remove_robot(const FeatureMask& blocked, const FeatureMask& silhouette, RobotRemoval removal,
-                  FeatureMask& obstacles) {
+                  FeatureMask& obstacles, int reach) {
   if (blocked.columns() != silhouette.columns() || blocked.rows() != silhouette.rows()) {
     throw std::invalid_argument("robot removal: blocked mask and silhouette differ in size");
   }
+  if (reach < 0) throw std::invalid_argument("occlusion reach must be >= 0 feature cells");
   obstacles = blocked;
   obstacles.subtract(silhouette);
   if (removal == RobotRemoval::kPlain || !obstacles.any()) return;
-  // Grow the outside blobs into the blocked part of the silhouette until they stop growing.
-  FeatureMask hidden = blocked;
+  // Grow the outside blobs into the blocked part of the silhouette, one step per cell of reach.
+  // Scratch masks per thread: after the first call of a size this allocates nothing.
+  thread_local FeatureMask hidden;
+  thread_local FeatureMask frontier;
+  thread_local FeatureMask grown;
+  hidden = blocked;
   hidden &= silhouette;
-  while (grow_within(obstacles, hidden, obstacles)) {
+  frontier = obstacles;
+  grown = obstacles;
+  for (int step = 0; step < reach; ++step) {
+    if (!grow_within(frontier, hidden, obstacles, grown)) break;
+    std::swap(frontier, grown);
   }
 }
 

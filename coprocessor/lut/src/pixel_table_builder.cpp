@@ -34,7 +34,7 @@ std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
     std::uint32_t extents[kMaxJoints]{};
     for (std::uint32_t axis = 0; axis < axes.count; ++axis) extents[axis] = 1;
     while (coord[0] + extents[0] < axes.cells[0] && extents[0] < kMaxExtent &&
-           cells.test(start + extents[0])) {
+           remaining.test(start + extents[0])) {
       ++extents[0];
     }
     for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
@@ -43,7 +43,7 @@ std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
         std::uint32_t layer[kMaxJoints]{};
         std::copy(extents, extents + axes.count, layer);
         layer[axis] = 1;
-        if (!box_inside(cells, axes, start + extents[axis] * axes.stride[axis], layer)) break;
+        if (!box_inside(remaining, axes, start + extents[axis] * axes.stride[axis], layer)) break;
         ++extents[axis];
       }
     }

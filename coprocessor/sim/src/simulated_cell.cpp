@@ -58,6 +58,11 @@ std::vector<cv::Mat> SimulatedCell::render_surfaces(const std::vector<SurfaceMes
   return frames;
 }
 
+cv::Mat SimulatedCell::coverage(std::size_t camera_index,
+                                const std::vector<SurfaceMesh>& surfaces) {
+  return renderers_.at(camera_index).coverage(surfaces);
+}
+
 cv::Mat SimulatedCell::robot_coverage(std::size_t camera_index, const std::vector<double>& q) {
   return renderers_.at(camera_index).coverage({surface_of(robot_shapes(q), kRobotAlbedo)});
 }

@@ -22,6 +22,7 @@ namespace safecell {
 struct FusionSettings {
   int camera_threshold = 2;  // 1..camera count
   RobotRemoval removal = RobotRemoval::kOcclusionAware;
+  int occlusion_reach = kDefaultOcclusionReach;  // feature cells, for kOcclusionAware
 };
 
 struct FusionCounts {
@@ -82,7 +83,7 @@ void count_at_least(const std::vector<const CellSet*>& sets, int threshold,
 // Robot removal for every known camera (shared by the fast fusion and the baseline).
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
                              const RobotSilhouettes& silhouettes, CellIndex robot_cell,
-                             RobotRemoval removal, std::vector<FeatureMask>& robot,
+                             const FusionSettings& settings, std::vector<FeatureMask>& robot,
                              std::vector<FeatureMask>& obstacles);
 
 }  // namespace safecell

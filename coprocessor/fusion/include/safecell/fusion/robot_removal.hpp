@@ -6,11 +6,14 @@
 // whatever stood in front of or behind the robot there, so a person next to the arm in the image
 // can lose the part that overlaps it, or all of a thin limb.
 //
-// kOcclusionAware (the default) keeps every blocked region that reaches outside the silhouette
-// whole, the part inside included: a person partly hidden by the robot is a connected blob, and
-// its hidden part can be anywhere inside the silhouette next to the visible part. Only blocked
-// regions wholly inside the silhouette (the robot itself) are dropped. Pixels of the silhouette
-// that are not blocked are seen free and stay free. Connectivity is 8-neighbour.
+// kOcclusionAware (the default) treats the blocked pixels inside the silhouette as unknown rather
+// than free: a person partly hidden by the robot is one blob with its visible part, so every
+// blocked silhouette pixel within `reach` feature cells (8-neighbour steps through blocked
+// silhouette pixels) of a blocked pixel outside the silhouette is kept as an obstacle. Blocked
+// regions wholly inside the silhouette (the robot itself) are dropped; silhouette pixels that
+// are not blocked are seen free. The reach is bounded because a fill without bound would run
+// along the whole arm and mark the robot's own configuration as an obstacle whenever a person
+// touches its image; a person wholly hidden in one camera is left to the other cameras.
 
 #include "safecell/lut/feature_mask.hpp"
 
@@ -20,10 +23,13 @@ enum class RobotRemoval { kOcclusionAware, kPlain };
 
 const char* to_string(RobotRemoval removal);
 
+// The default reach of the occlusion-aware fill, in feature cells (about 20 cm at 3 m).
+inline constexpr int kDefaultOcclusionReach = 3;
+
 // obstacles = what of `blocked` remains once the robot (`silhouette`) is removed. `obstacles` is
 // resized to the mask size when needed; it must not alias the inputs. Throws
-// std::invalid_argument for masks of different sizes.
+// std::invalid_argument for masks of different sizes or a negative reach.
 void remove_robot(const FeatureMask& blocked, const FeatureMask& silhouette, RobotRemoval removal,
-                  FeatureMask& obstacles);
+                  FeatureMask& obstacles, int reach = kDefaultOcclusionReach);
 
 }  // namespace safecell

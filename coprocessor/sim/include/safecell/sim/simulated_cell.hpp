@@ -49,6 +49,8 @@ class SimulatedCell {
   // Pixels of one camera the robot (as it appears) covers, occlusion ignored (CV_8UC1, 255 =
   // covered).
   cv::Mat robot_coverage(std::size_t camera_index, const std::vector<double>& q);
+  // Pixels of one camera the surfaces cover, occlusion ignored (CV_8UC1, 255 = covered).
+  cv::Mat coverage(std::size_t camera_index, const std::vector<SurfaceMesh>& surfaces);
 
  private:
   std::vector<PlacedShape> robot_shapes(const std::vector<double>& q) const;

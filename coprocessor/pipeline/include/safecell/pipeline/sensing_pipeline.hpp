@@ -1,0 +1,52 @@
+#pragma once
+// One cycle of the coprocessor's sensing (DESIGN.md §1): the frames of every camera -> noise cut
+// and feature images -> blocked masks against the reference -> fusion with the robot's
+// configuration at the exposure time -> the forbidden map. A camera without a frame (an empty
+// image) has an unknown view. Not thread-safe; after the first cycle it allocates little.
+
+#include <opencv2/core/mat.hpp>
+#include <vector>
+
+#include "safecell/cell/cell_model.hpp"
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/features/feature_extractor.hpp"
+#include "safecell/fusion/forbidden_map_fusion.hpp"
+
+namespace safecell {
+
+struct CycleTimes {
+  double features_ms = 0.0;  // frames to blocked masks, all cameras
+  double fusion_ms = 0.0;    // robot removal, back-projection, threshold, static
+};
+
+class SensingPipeline {
+ public:
+  // reference_frames: per camera, the reference image (CV_8UC1 of the camera's size).
+  // noise_bits: per camera, or empty for none. Keeps references to `luts` and `silhouettes`.
+  // Throws std::invalid_argument when the counts or sizes do not match the cell.
+  SensingPipeline(const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
+                  const RobotSilhouettes& silhouettes, const std::vector<cv::Mat>& reference_frames,
+                  const std::vector<int>& noise_bits, const FusionSettings& settings);
+
+  // q: the robot's joint values (rad) when the frames were exposed; outside the grid it is
+  // refused (std::out_of_range): the caller must stop the robot then.
+  const CellSet& process(const std::vector<cv::Mat>& frames, const std::vector<double>& q);
+
+  [[nodiscard]] const ForbiddenMapFusion& fusion() const { return fusion_; }
+  [[nodiscard]] const std::vector<CameraObservation>& observations() const { return observations_; }
+  [[nodiscard]] const CycleTimes& times() const { return times_; }
+  [[nodiscard]] CellIndex robot_cell() const { return robot_cell_; }
+
+ private:
+  const CellModel& cell_;
+  const CspaceGrid& grid_;
+  std::vector<FeatureExtractor> extractors_;
+  std::vector<FeatureImages> references_;
+  std::vector<FeatureImages> current_;
+  std::vector<CameraObservation> observations_;
+  ForbiddenMapFusion fusion_;
+  CycleTimes times_;
+  CellIndex robot_cell_ = 0;
+};
+
+}  // namespace safecell

@@ -1,0 +1,73 @@
+#include "safecell/pipeline/sensing_pipeline.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "safecell/features/blocked_mask.hpp"
+
+namespace safecell {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+SensingPipeline::SensingPipeline(const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
+                                 const RobotSilhouettes& silhouettes,
+                                 const std::vector<cv::Mat>& reference_frames,
+                                 const std::vector<int>& noise_bits,
+                                 const FusionSettings& settings)
+    : cell_(cell), grid_(grid), fusion_(luts, silhouettes, settings) {
+  const std::size_t cameras = cell.cameras.size();
+  if (reference_frames.size() != cameras || (!noise_bits.empty() && noise_bits.size() != cameras) ||
+      luts.cameras.size() != cameras) {
+    throw std::invalid_argument("sensing pipeline: " + std::to_string(cameras) + " cameras, " +
+                                std::to_string(reference_frames.size()) + " reference images, " +
+                                std::to_string(luts.cameras.size()) + " LUT cameras");
+  }
+  for (std::size_t c = 0; c < cameras; ++c) {
+    if (luts.cameras[c].camera != cell.cameras[c].name()) {
+      throw std::invalid_argument("LUT camera " + std::to_string(c) + " is '" +
+                                  luts.cameras[c].camera + "', the cell's is '" +
+                                  cell.cameras[c].name() + "'");
+    }
+    extractors_.emplace_back(cell.feature_grid, noise_bits.empty() ? 0 : noise_bits[c]);
+    references_.push_back(extractors_.back().extract(reference_frames[c]));
+  }
+  current_.resize(cameras);
+  observations_.assign(cameras, CameraObservation{false, FeatureMask(cell.feature_grid)});
+}
+
+const CellSet& SensingPipeline::process(const std::vector<cv::Mat>& frames,
+                                        const std::vector<double>& q) {
+  if (frames.size() != extractors_.size()) {
+    throw std::invalid_argument(std::to_string(frames.size()) + " frames for " +
+                                std::to_string(extractors_.size()) + " cameras");
+  }
+  JointAngles angles;
+  if (q.size() != grid_.joint_count()) throw std::invalid_argument("wrong number of joint values");
+  for (std::size_t j = 0; j < q.size(); ++j) angles.rad[j] = q[j];
+  const auto cell = grid_.cell_containing(angles);
+  if (!cell.ok()) throw std::out_of_range("the robot's configuration is outside the C-space grid");
+  robot_cell_ = cell.value();
+
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t c = 0; c < frames.size(); ++c) {
+    CameraObservation& observation = observations_[c];
+    observation.known = !frames[c].empty();
+    if (!observation.known) continue;
+    extractors_[c].extract(frames[c], current_[c]);
+    observation.blocked = FeatureMask::from_image(
+        blocked_mask(current_[c], references_[c], cell_.feature_weights, cell_.blocked_threshold));
+  }
+  times_.features_ms = ms_since(start);
+  const auto fusion_start = std::chrono::steady_clock::now();
+  const CellSet& forbidden = fusion_.fuse(observations_, robot_cell_);
+  times_.fusion_ms = ms_since(fusion_start);
+  return forbidden;
+}
+
+}  // namespace safecell

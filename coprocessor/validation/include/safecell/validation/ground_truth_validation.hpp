@@ -1,0 +1,69 @@
+#pragma once
+// `safecell validate`: the whole sensing pipeline on random scenes of the simulated cell, checked
+// against the exact collision ground truth (FCL). Per scene the robot stands at a random
+// configuration and one or more humans at random places; the cameras render the scene, the
+// pipeline makes the forbidden map, and many robot configurations (half of them turned towards a
+// human) are checked:
+//   missed          colliding with a human that at least `camera_threshold` cameras saw (its
+//                   feature cells are obstacles there after robot removal), or with a static
+//                   obstacle, yet not forbidden. Must be 0.
+//   unseen          colliding with a human fewer cameras saw (left to the other cameras and the
+//                   camera threshold; reported, not a failure of the fusion).
+//   false positive  forbidden but free.
+// Phantom cells: critical cells sampled per scene whose robot (at the cell centre) stays farther
+// than `phantom_distance_m` from every human, scaled up to the scene's critical cells.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "safecell/cell/cell_model.hpp"
+#include "safecell/fusion/forbidden_map_fusion.hpp"
+#include "safecell/lut/lut_set.hpp"
+#include "safecell/lut/robot_silhouettes.hpp"
+
+namespace safecell {
+
+struct ValidationOptions {
+  std::size_t scenes = 200;
+  std::uint64_t seed = 1;
+  std::size_t configurations_per_scene = 400;
+  int max_humans = 2;
+  std::size_t reference_frames = 9;
+  std::size_t phantom_samples = 100;  // critical cells checked per scene
+  double phantom_distance_m = 0.5;
+  FusionSettings fusion;
+};
+
+struct MissedCollision {
+  std::size_t scene = 0;
+  std::vector<double> q;
+  std::string obstacle;
+  int cameras_seeing = 0;
+};
+
+struct ValidationReport {
+  std::size_t scenes = 0;
+  std::size_t configs_checked = 0;
+  std::size_t colliding = 0;
+  std::size_t missed = 0;
+  std::size_t unseen = 0;
+  std::size_t free = 0;
+  std::size_t false_positives = 0;
+  double false_positive_rate = 0.0;
+  double phantom_cells = 0.0;  // mean per scene (estimated from samples)
+  double forbidden_share = 0.0;  // mean share of the grid forbidden per scene
+  double fusion_ms_p99 = 0.0;
+  double features_ms_p99 = 0.0;
+  std::vector<MissedCollision> missed_cases;  // the first few, for the report
+};
+
+// progress(scenes done, scenes). Throws std::invalid_argument for absurd options, or a cell
+// without a robot model.
+[[nodiscard]] ValidationReport validate_against_ground_truth(
+    const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
+    const RobotSilhouettes& silhouettes, const ValidationOptions& options,
+    const std::function<void(std::size_t, std::size_t)>& progress = {});
+
+}  // namespace safecell
