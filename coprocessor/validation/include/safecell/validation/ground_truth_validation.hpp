@@ -22,6 +22,7 @@
 #include "safecell/fusion/forbidden_map_fusion.hpp"
 #include "safecell/lut/lut_set.hpp"
 #include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/validation/scene_check.hpp"
 
 namespace safecell {
 
@@ -34,13 +35,6 @@ struct ValidationOptions {
   std::size_t phantom_samples = 100;  // critical cells checked per scene
   double phantom_distance_m = 0.5;
   FusionSettings fusion;
-};
-
-struct MissedCollision {
-  std::size_t scene = 0;
-  std::vector<double> q;
-  std::string obstacle;
-  int cameras_seeing = 0;
 };
 
 struct ValidationReport {
