@@ -6,40 +6,18 @@
 #include <string>
 
 #include "cli_run.hpp"
-#include "safecell/cell/default_cell.hpp"
+#include "coarse_cell.hpp"
 
 namespace safecell {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The default cell on a coarse grid (m_max 0.4 m, joint 4 swept), so the build takes a moment.
-fs::path write_coarse_cell(const fs::path& folder) {
-  std::string yaml(default_cell_yaml());
-  const auto replace = [&yaml](const std::string& from, const std::string& to) {
-    const auto at = yaml.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    yaml.replace(at, from.size(), to);
-  };
-  replace("m_max_m: 0.18", "m_max_m: 0.4");
-  replace("range_deg: [-240, 240]\n    discretised: true", "range_deg: [-240, 240]\n    discretised: false");
-  const fs::path path = folder / "coarse.yaml";
-  std::ofstream(path) << yaml;
-  return path;
-}
-
 class LutsCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() / ("safecell-luts-command-" + std::to_string(::getpid()));
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-    cell_ = write_coarse_cell(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-
-  fs::path folder_;
-  fs::path cell_;
+  test::ScratchFolder scratch_{"safecell-luts-command"};
+  fs::path folder_ = scratch_.path();
+  fs::path cell_ = test::write_coarse_cell(folder_);
 };
 
 TEST_F(LutsCommand, BuildsOnceAndReportsSizes) {
@@ -77,8 +55,8 @@ TEST_F(LutsCommand, RefusesWhatIsNotALutFile) {
   EXPECT_EQ(empty.exit_code, 2);
   EXPECT_NE(empty.err.find("holds no LUT file"), std::string::npos) << empty.err;
 
-  const auto absurd = test::safecell_cli({"luts", "build", "--cell", cell_.string(), "--out",
-                                          folder_.string(), "--ball-radius", "3"});
+  const auto absurd = test::safecell_cli(
+      {"luts", "build", "--cell", cell_.string(), "--out", folder_.string(), "--ball-radius", "3"});
   EXPECT_NE(absurd.exit_code, 0);
 }
 

@@ -48,8 +48,8 @@ CellSet dense_oracle(const LutSet& luts, const ModelSilhouettes& silhouettes,
     for (std::size_t camera = 0; camera < cameras; ++camera) {
       FeatureMask silhouette(luts.columns, luts.rows);
       silhouettes.add_silhouette(cell, camera, silhouette);
-      const bool marks = observations[camera].known ? silhouette.intersects(obstacles[camera])
-                                                    : silhouette.any();
+      const bool marks =
+          observations[camera].known ? silhouette.intersects(obstacles[camera]) : silhouette.any();
       count += marks ? 1 : 0;
     }
     if (count >= settings.camera_threshold || luts.static_cells.test(cell)) forbidden.set(cell);

@@ -76,8 +76,8 @@ LutSet plane_luts(const CspaceGrid& grid, const std::vector<PlaneCamera>& camera
   build.camera_count = cameras.size();
   build.columns = kColumns;
   build.rows = 1;
-  const auto tables = build_cell_to_pixels_tables(
-      build, [&](CellIndex cell, std::vector<FeatureMask>& masks) {
+  const auto tables =
+      build_cell_to_pixels_tables(build, [&](CellIndex cell, std::vector<FeatureMask>& masks) {
         const Square square = square_of(grid, cell);
         for (std::size_t c = 0; c < cameras.size(); ++c) {
           double lo = 10.0;
@@ -110,9 +110,9 @@ std::vector<CameraObservation> observe(const std::vector<PlaneCamera>& cameras) 
     for (const auto& obstacle : kObstacles) {
       const double centre = camera.angle_of(obstacle);
       const double half = std::asin(kObstacleRadius / (obstacle - camera.position).norm());
-      observation.blocked.set_rect(FeatureRect{
-          static_cast<std::uint16_t>(camera.column_of(centre - half)), 0,
-          static_cast<std::uint16_t>(camera.column_of(centre + half)), 0});
+      observation.blocked.set_rect(
+          FeatureRect{static_cast<std::uint16_t>(camera.column_of(centre - half)), 0,
+                      static_cast<std::uint16_t>(camera.column_of(centre + half)), 0});
     }
     observations.push_back(std::move(observation));
   }
@@ -160,7 +160,8 @@ TEST(PhantomObstacles, AppearWithTwoCamerasAndDisappearWithThree) {
   const Outcome two = fuse_scene({left, below});
   EXPECT_GT(two.obstacle_cells, 0);
   EXPECT_EQ(two.obstacle_cells_forbidden, two.obstacle_cells);
-  EXPECT_GT(two.phantom_cells, 0) << "two cameras should see phantoms at (0.25, 0.75), (0.75, 0.25)";
+  EXPECT_GT(two.phantom_cells, 0)
+      << "two cameras should see phantoms at (0.25, 0.75), (0.75, 0.25)";
 
   const Outcome three = fuse_scene({left, below, upper_right});
   EXPECT_EQ(three.obstacle_cells_forbidden, three.obstacle_cells);

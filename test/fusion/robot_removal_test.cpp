@@ -91,8 +91,9 @@ TEST(RobotRemoval, SeparateBlobsInsideTheSilhouetteAreDropped) {
 
 TEST(RobotRemoval, MasksOfDifferentSizesAreRefused) {
   FeatureMask obstacles;
-  EXPECT_THROW(remove_robot(FeatureMask(64, 64), FeatureMask(32, 64), RobotRemoval::kPlain, obstacles),
-               std::invalid_argument);
+  EXPECT_THROW(
+      remove_robot(FeatureMask(64, 64), FeatureMask(32, 64), RobotRemoval::kPlain, obstacles),
+      std::invalid_argument);
 }
 
 }  // namespace

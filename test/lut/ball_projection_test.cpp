@@ -33,7 +33,8 @@ void expect_points_inside(const PinholeCamera& camera, const Ball& ball, std::mt
   std::normal_distribution<double> normal;
   for (int k = 0; k < 400; ++k) {
     Eigen::Vector3d direction(normal(rng), normal(rng), normal(rng));
-    const double scale = k % 2 == 0 ? 1.0 : std::cbrt(std::uniform_real_distribution<double>()(rng));
+    const double scale =
+        k % 2 == 0 ? 1.0 : std::cbrt(std::uniform_real_distribution<double>()(rng));
     const Eigen::Vector3d point = ball.centre_m + ball.radius_m * scale * direction.normalized();
     const auto pixel = camera.project(point);
     if (!pixel || !camera.in_image(*pixel)) continue;
@@ -51,18 +52,18 @@ TEST(BallProjection, RectangleHoldsEveryVisiblePointOfTheBall) {
   test::PropertyRun run(300);
   for (int i = 0; i < run.iterations(); ++i) {
     const PinholeCamera camera = tiled_camera(run.rng(), i % 2 == 1);
-    const Ball ball{Eigen::Vector3d(test::uniform(run.rng(), -1.5, 1.5),
-                                    test::uniform(run.rng(), -1.5, 1.5),
-                                    test::uniform(run.rng(), 0.0, 2.0)),
-                    test::uniform(run.rng(), 0.01, 0.6)};
+    const Ball ball{
+        Eigen::Vector3d(test::uniform(run.rng(), -1.5, 1.5), test::uniform(run.rng(), -1.5, 1.5),
+                        test::uniform(run.rng(), 0.0, 2.0)),
+        test::uniform(run.rng(), 0.01, 0.6)};
     expect_points_inside(camera, ball, run.rng());
   }
 }
 
 TEST(BallProjection, TightWithoutDistortion) {
   // A ball straight ahead: its image is a circle of radius f tan(asin(r / d)).
-  const PinholeCamera camera = PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0},
-                                                      std::numbers::pi / 2, 704, 576);
+  const PinholeCamera camera =
+      PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, std::numbers::pi / 2, 704, 576);
   const FeatureGrid grid;  // 64 x 64 cells of 11 x 9 px
   const BallProjection projection(camera, grid);
   const auto rect = projection.feature_rect(Ball{{0, 0, 0}, 0.5});
@@ -74,8 +75,8 @@ TEST(BallProjection, TightWithoutDistortion) {
 }
 
 TEST(BallProjection, BallAtTheCameraCoversTheImageAndBallBehindItNothing) {
-  const PinholeCamera camera = PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0},
-                                                      std::numbers::pi / 2, 704, 576);
+  const PinholeCamera camera =
+      PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, std::numbers::pi / 2, 704, 576);
   const BallProjection projection(camera, FeatureGrid{});
   const auto whole = projection.feature_rect(Ball{{0.1, 0, 3.0}, 0.2});
   ASSERT_TRUE(whole.has_value());
@@ -85,8 +86,8 @@ TEST(BallProjection, BallAtTheCameraCoversTheImageAndBallBehindItNothing) {
 }
 
 TEST(BallProjection, GridMustTileTheCamera) {
-  const PinholeCamera camera = PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0},
-                                                      std::numbers::pi / 2, 640, 480);
+  const PinholeCamera camera =
+      PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, std::numbers::pi / 2, 640, 480);
   EXPECT_THROW(BallProjection(camera, FeatureGrid{}), std::invalid_argument);
 }
 

@@ -46,7 +46,8 @@ TEST(FeatureMask, SetRectEqualsCellByCell) {
       mask.set_rect(FeatureRect{static_cast<std::uint16_t>(c0), static_cast<std::uint16_t>(r0),
                                 static_cast<std::uint16_t>(c1), static_cast<std::uint16_t>(r1)});
       for (int y = r0; y <= r1; ++y) {
-        for (int x = c0; x <= c1; ++x) oracle[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] = true;
+        for (int x = c0; x <= c1; ++x)
+          oracle[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] = true;
       }
     }
     std::size_t set = 0;

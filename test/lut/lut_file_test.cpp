@@ -30,9 +30,10 @@ class LutFile : public ::testing::Test {
     delete cell_;
   }
   void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("safecell_lut_file_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-               "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    folder_ =
+        fs::temp_directory_path() /
+        ("safecell_lut_file_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+         "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(folder_);
   }
   void TearDown() override { fs::remove_all(folder_); }
@@ -111,9 +112,10 @@ TEST_F(LutFile, RecordedSetKeepsItsCellTables) {
   build.columns = recorded.columns;
   build.rows = recorded.rows;
   const ModelSilhouettes silhouettes(*cell_, *grid_, ModelLutOptions{});
-  auto tables = build_cell_to_pixels_tables(build, [&](CellIndex cell, std::vector<FeatureMask>& masks) {
-    silhouettes.add_silhouettes(cell, masks);
-  });
+  auto tables =
+      build_cell_to_pixels_tables(build, [&](CellIndex cell, std::vector<FeatureMask>& masks) {
+        silhouettes.add_silhouettes(cell, masks);
+      });
   for (std::size_t c = 0; c < tables.size(); ++c) recorded.cameras[c].cell_to_pixels = tables[c];
   const fs::path path = folder_ / "recorded.sclut";
   write_lut_file(path, recorded);

@@ -1,6 +1,6 @@
 #pragma once
-// The default cell on a coarse grid (m_max 0.4 m, joints 1-3 discretised, a few thousand cells), so that the model
-// tests can afford to check every cell; and random configurations inside a cell.
+// The default cell on a coarse grid (m_max 0.4 m, joints 1-3 discretised, a few thousand cells), so
+// that the model tests can afford to check every cell; and random configurations inside a cell.
 
 #include <random>
 #include <vector>

@@ -1,4 +1,5 @@
-// The fusion of paper §4.3-4.4 on the default cell: 4 blocked masks (robot and a human near it)
+// The fusion of paper §4.3-4.4 on the default cell: 4 blocked masks (robot and a person about
+// 1.3 m from its base, against the median reference)
 // -> robot removal with the model's LUT-1 -> LUT-2 back-projection -> camera threshold -> static
 // obstacles -> the forbidden map. Targets (DESIGN.md §5): typical scene <= 0.1 ms, 30 % of the
 // pixels blocked <= 1 ms, >= 10x faster than the paper's per-cell counting in the same run.
@@ -17,6 +18,7 @@
 #include "safecell/fusion/baseline_fusion.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
 #include "safecell/lut/model_luts.hpp"
+#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 
 namespace safecell {
@@ -29,7 +31,7 @@ struct FusionSetUp {
   LutSet luts;
   ModelSilhouettes silhouettes{cell, grid, ModelLutOptions{}};
   CellIndex robot_cell = 0;
-  std::vector<CameraObservation> typical;       // the robot and a human near it
+  std::vector<CameraObservation> typical;         // the robot and a human near it
   std::vector<CameraObservation> thirty_percent;  // 30 % of every mask blocked
 
   FusionSetUp() {
@@ -45,13 +47,15 @@ struct FusionSetUp {
     HumanPose human;
     human.position_m = Eigen::Vector2d(1.0, -0.8);
     human.heading_rad = 2.5;
-    const std::vector<cv::Mat> empty = sim.render_surfaces({}, 0, 0.0);
+    // The reference as the pipeline makes it: the median of nine frames of the empty cell.
+    const std::vector<cv::Mat> reference = simulated_reference(sim, cell, 9, 1).frames;
     const std::vector<cv::Mat> frames = sim.render(SimScene{q, {human}}, 1, 0.0);
     FeatureExtractor extractor(cell.feature_grid);
     std::mt19937_64 rng(7);
     for (std::size_t c = 0; c < frames.size(); ++c) {
-      const cv::Mat mask = blocked_mask(extractor.extract(frames[c]), extractor.extract(empty[c]),
-                                        cell.feature_weights, cell.blocked_threshold);
+      const cv::Mat mask =
+          blocked_mask(extractor.extract(frames[c]), extractor.extract(reference[c]),
+                       cell.feature_weights, cell.blocked_threshold);
       typical.push_back(CameraObservation{true, FeatureMask::from_image(mask)});
       thirty_percent.push_back(CameraObservation{true, blobs_covering(0.3, rng)});
     }
@@ -60,16 +64,18 @@ struct FusionSetUp {
   // Random rectangles until `share` of the feature cells are blocked.
   FeatureMask blobs_covering(double share, std::mt19937_64& rng) const {
     FeatureMask mask(cell.feature_grid);
-    const auto target = static_cast<std::size_t>(share * static_cast<double>(cell.feature_grid.cell_count()));
+    const auto target =
+        static_cast<std::size_t>(share * static_cast<double>(cell.feature_grid.cell_count()));
     std::uniform_int_distribution<int> column(0, mask.columns() - 1);
     std::uniform_int_distribution<int> row(0, mask.rows() - 1);
     std::uniform_int_distribution<int> size(1, 8);
     while (mask.count() < target) {
       const int c0 = column(rng);
       const int r0 = row(rng);
-      mask.set_rect(FeatureRect{static_cast<std::uint16_t>(c0), static_cast<std::uint16_t>(r0),
-                                static_cast<std::uint16_t>(std::min(mask.columns() - 1, c0 + size(rng))),
-                                static_cast<std::uint16_t>(std::min(mask.rows() - 1, r0 + size(rng)))});
+      mask.set_rect(
+          FeatureRect{static_cast<std::uint16_t>(c0), static_cast<std::uint16_t>(r0),
+                      static_cast<std::uint16_t>(std::min(mask.columns() - 1, c0 + size(rng))),
+                      static_cast<std::uint16_t>(std::min(mask.rows() - 1, r0 + size(rng)))});
     }
     return mask;
   }
@@ -82,7 +88,8 @@ const FusionSetUp& set_up() {
 
 void report(benchmark::State& state, const FusionSetUp& fusion, const ForbiddenMapFusion& engine) {
   double pixels = 0.0;
-  for (const std::size_t count : engine.counts().obstacle_pixels) pixels += static_cast<double>(count);
+  for (const std::size_t count : engine.counts().obstacle_pixels)
+    pixels += static_cast<double>(count);
   state.counters["obstacle_pixels"] = pixels;
   state.counters["forbidden_cells"] = static_cast<double>(engine.counts().forbidden_cells);
   state.counters["static_cells"] = static_cast<double>(fusion.luts.static_cells.count());
@@ -96,7 +103,8 @@ void report(benchmark::State& state, const FusionSetUp& fusion, const ForbiddenM
 
 void fuse(benchmark::State& state, const std::vector<CameraObservation>& observations) {
   const FusionSetUp& fusion = set_up();
-  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes, FusionSettings{fusion.cell.camera_threshold});
+  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes,
+                            FusionSettings{fusion.cell.camera_threshold});
   while (state.KeepRunning()) {
     benchmark::DoNotOptimize(&engine.fuse(observations, fusion.robot_cell));
     benchmark::ClobberMemory();
@@ -112,7 +120,8 @@ void fusion_thirty_percent_blocked(benchmark::State& state) {
 
 void fusion_baseline_typical_scene(benchmark::State& state) {
   const FusionSetUp& fusion = set_up();
-  BaselineFusion engine(fusion.luts, fusion.silhouettes, FusionSettings{fusion.cell.camera_threshold});
+  BaselineFusion engine(fusion.luts, fusion.silhouettes,
+                        FusionSettings{fusion.cell.camera_threshold});
   while (state.KeepRunning()) {
     benchmark::DoNotOptimize(&engine.fuse(fusion.typical, fusion.robot_cell));
     benchmark::ClobberMemory();

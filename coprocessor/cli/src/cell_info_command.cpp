@@ -95,8 +95,7 @@ void print_text(const CellModel& model, const CspaceGrid& grid, std::ostream& ou
 }  // namespace
 
 void run_cell_info(const CellInfoOptions& options, std::ostream& out) {
-  const CellModel model = load_cell_model(
-      load_cell_file_or_default(options.cell_path));
+  const CellModel model = load_cell_model(load_cell_file_or_default(options.cell_path));
   const CspaceGrid grid = make_grid(model.config);
   if (options.json) {
     out << to_json(model, grid).dump(2) << '\n';

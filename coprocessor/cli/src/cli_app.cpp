@@ -6,6 +6,7 @@
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
+#include "safecell/cli/demo_command.hpp"
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
@@ -28,6 +29,30 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   app.require_subcommand(1);
   app.set_version_flag("--version", "safecell 0.1.0");
   std::function<void()> action;
+
+  int exit_code = 0;
+  DemoOptions demo;
+  CLI::App* demo_command = app.add_subcommand(
+      "demo",
+      "The simulated cell: the robot moving, a person walking in close to it and out again, the "
+      "sensing pipeline on every frame; writes a report folder (camera views, C-space slices, "
+      "summary.json)");
+  demo_command->add_option("--cell", demo.cell_path,
+                           "Cell file (YAML); without it the built-in default cell");
+  demo_command->add_option("--seconds", demo.seconds, "Simulated time")->capture_default_str();
+  demo_command->add_option("--fps", demo.fps, "Camera frames per second")->capture_default_str();
+  demo_command->add_option("--out", demo.out_dir, "Report folder")->capture_default_str();
+  demo_command->add_option("--lut-cache", demo.lut_cache,
+                           "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                           "~/.cache/safecell");
+  demo_command->add_option("--seed", demo.seed, "Seed of the sensor noise and the checks")
+      ->capture_default_str();
+  demo_command
+      ->add_option("--views-every", demo.views_every,
+                   "Cycles between saved camera views and slices (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000000));
+  demo_command->callback([&] { action = [&] { exit_code = run_demo(demo, out, err); }; });
 
   CLI::App* cell = app.add_subcommand("cell", "Inspect a cell description");
   cell->require_subcommand(1);
@@ -97,12 +122,14 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   build_command->add_option("--out", build.out_dir,
                             "Folder for the LUT file; without it the cache folder "
                             "($SAFECELL_CACHE or ~/.cache/safecell)");
-  build_command->add_option("--ball-radius", build.ball_radius_m,
-                            "Size of the balls covering the robot, metres")
+  build_command
+      ->add_option("--ball-radius", build.ball_radius_m,
+                   "Size of the balls covering the robot, metres")
       ->capture_default_str()
       ->check(CLI::Range(0.005, 0.5));
-  build_command->add_option("--padding", build.padding_m,
-                            "Margin added all round the robot, metres (calibration error)")
+  build_command
+      ->add_option("--padding", build.padding_m,
+                   "Margin added all round the robot, metres (calibration error)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   build_command->add_option("--threads", build.threads, "Worker threads; 0: one per core")
@@ -128,22 +155,22 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   validate_command->add_option("--scenes", validate.scenes, "Random scenes")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
-  validate_command->add_option("--seed", validate.seed, "Seed of the scenes")->capture_default_str();
-  validate_command->add_option("--configs", validate.configurations,
-                               "Robot configurations checked per scene")
+  validate_command->add_option("--seed", validate.seed, "Seed of the scenes")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--configs", validate.configurations, "Robot configurations checked per scene")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000000));
   validate_command->add_option("--humans", validate.humans, "At most this many humans per scene")
       ->capture_default_str()
       ->check(CLI::Range(1, 10));
-  validate_command->add_option("--removal", validate.removal,
-                               "Robot removal: occlusion-aware or plain")
+  validate_command
+      ->add_option("--removal", validate.removal, "Robot removal: occlusion-aware or plain")
       ->capture_default_str();
   validate_command->add_option("--lut-cache", validate.lut_cache,
                                "Folder of cached look-up tables; default $SAFECELL_CACHE or "
                                "~/.cache/safecell");
   validate_command->add_flag("--json", validate.json, "Print one JSON object instead of text");
-  int exit_code = 0;
   validate_command->callback(
       [&] { action = [&] { exit_code = run_validate(validate, out, err); }; });
 

@@ -8,8 +8,8 @@ namespace safecell {
 
 CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const std::string& cache_folder,
                      std::ostream& err) {
-  static const char* const kStages[kLutBuildStages] = {
-      "building LUT-1 silhouettes", "building LUT-2", "static obstacles"};
+  static const char* const kStages[kLutBuildStages] = {"building LUT-1 silhouettes",
+                                                       "building LUT-2", "static obstacles"};
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   CachedLuts luts = model_luts_cached(
       cell, grid, ModelLutOptions{},
@@ -17,7 +17,8 @@ CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const std::s
       [&bar](int stage, double fraction) { bar.update(kStages[stage], fraction); });
   bar.finish();
   if (!luts.note.empty()) err << luts.note << '\n';
-  if (luts.built) err << "look-up tables built in " << luts.build_s << " s: " << luts.file.string() << '\n';
+  if (luts.built)
+    err << "look-up tables built in " << luts.build_s << " s: " << luts.file.string() << '\n';
   return luts;
 }
 

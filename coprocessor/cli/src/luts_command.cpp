@@ -40,7 +40,8 @@ std::vector<fs::path> lut_files_in(const fs::path& path) {
   if (!fs::is_directory(path)) return {path};
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(path)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".sclut") files.push_back(entry.path());
+    if (entry.is_regular_file() && entry.path().extension() == ".sclut")
+      files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) {
@@ -67,8 +68,9 @@ nlohmann::ordered_json summary_json(const fs::path& path, const LutFileSummary& 
                        {"lut2_boxes", camera.boxes},
                        {"covered_pairs", camera.covered_pairs},
                        {"uncompressed_bytes", camera_uncompressed},
-                       {"compression_ratio", static_cast<double>(camera_uncompressed) /
-                                                 static_cast<double>(std::max<std::uint64_t>(camera_stored, 1))}});
+                       {"compression_ratio",
+                        static_cast<double>(camera_uncompressed) /
+                            static_cast<double>(std::max<std::uint64_t>(camera_stored, 1))}});
   }
   const double camera_count = std::max<double>(1.0, static_cast<double>(summary.cameras.size()));
   nlohmann::ordered_json report;
@@ -134,16 +136,16 @@ void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ost
   lut_options.ball_radius_m = options.ball_radius_m;
   lut_options.padding_m = options.padding_m;
   lut_options.threads = options.threads;
-  const fs::path folder = options.out_dir.empty() ? default_lut_cache_folder() : fs::path(options.out_dir);
+  const fs::path folder =
+      options.out_dir.empty() ? default_lut_cache_folder() : fs::path(options.out_dir);
   if (options.force) {
     std::error_code ignored;
     fs::remove(lut_cache_file(folder, model_lut_fingerprint(cell, grid, lut_options)), ignored);
   }
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
-  const CachedLuts luts = model_luts_cached(cell, grid, lut_options, folder,
-                                            [&bar](int stage, double fraction) {
-                                              bar.update(kStageNames[stage], fraction);
-                                            });
+  const CachedLuts luts = model_luts_cached(
+      cell, grid, lut_options, folder,
+      [&bar](int stage, double fraction) { bar.update(kStageNames[stage], fraction); });
   bar.finish();
   if (!luts.note.empty()) err << luts.note << '\n';
   nlohmann::ordered_json report = summary_json(luts.file, read_lut_file_summary(luts.file));

@@ -15,8 +15,7 @@
 namespace safecell {
 
 void run_sim_render(const SimRenderOptions& options, std::ostream& out) {
-  const CellModel model = load_cell_model(
-      load_cell_file_or_default(options.cell_path));
+  const CellModel model = load_cell_model(load_cell_file_or_default(options.cell_path));
   if (!(options.noise_sigma >= 0.0 && options.noise_sigma <= 50.0)) {
     bad_option("--noise", std::to_string(options.noise_sigma), "expected 0 to 50 gray levels");
   }

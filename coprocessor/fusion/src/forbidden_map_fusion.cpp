@@ -53,8 +53,8 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     : luts_(luts), silhouettes_(silhouettes), settings_(settings) {
   if (silhouettes.camera_count() != luts.cameras.size()) {
     throw std::invalid_argument("robot silhouettes for " +
-                                std::to_string(silhouettes.camera_count()) + " cameras, tables for " +
-                                std::to_string(luts.cameras.size()));
+                                std::to_string(silhouettes.camera_count()) +
+                                " cameras, tables for " + std::to_string(luts.cameras.size()));
   }
   if (settings.camera_threshold < 1 ||
       static_cast<std::size_t>(settings.camera_threshold) > luts.cameras.size()) {
@@ -92,11 +92,11 @@ void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observation
     const auto& blocked = observations[camera].blocked;
     if (observations[camera].known &&
         (blocked.columns() != luts_.columns || blocked.rows() != luts_.rows)) {
-      throw std::invalid_argument("camera '" + luts_.cameras[camera].camera + "': blocked mask of " +
-                                  std::to_string(blocked.columns()) + " x " +
-                                  std::to_string(blocked.rows()) + " cells, the tables have " +
-                                  std::to_string(luts_.columns) + " x " +
-                                  std::to_string(luts_.rows));
+      throw std::invalid_argument("camera '" + luts_.cameras[camera].camera +
+                                  "': blocked mask of " + std::to_string(blocked.columns()) +
+                                  " x " + std::to_string(blocked.rows()) +
+                                  " cells, the tables have " + std::to_string(luts_.columns) +
+                                  " x " + std::to_string(luts_.rows));
     }
   }
 }

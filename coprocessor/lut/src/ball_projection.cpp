@@ -59,25 +59,22 @@ std::optional<FeatureRect> BallProjection::feature_rect(const Ball& ball_in_cell
   tangent_range(centre.x(), centre.z(), radius, denominator, inverse, x0, x1);
   tangent_range(centre.y(), centre.z(), radius, denominator, inverse, y0, y1);
   if (!distorted_) {
-    return cells_of(PixelBox{intrinsics_.fx_px * x0 + intrinsics_.cx_px,
-                             intrinsics_.fy_px * y0 + intrinsics_.cy_px,
-                             intrinsics_.fx_px * x1 + intrinsics_.cx_px,
-                             intrinsics_.fy_px * y1 + intrinsics_.cy_px});
+    return cells_of(PixelBox{
+        intrinsics_.fx_px * x0 + intrinsics_.cx_px, intrinsics_.fy_px * y0 + intrinsics_.cy_px,
+        intrinsics_.fx_px * x1 + intrinsics_.cx_px, intrinsics_.fy_px * y1 + intrinsics_.cy_px});
   }
   const auto box = distorted_box(x0, y0, x1, y1);
   return box ? cells_of(*box) : cells_of(PixelBox{-1e9, -1e9, 1e9, 1e9});
 }
 
 std::optional<BallProjection::PixelBox> BallProjection::distorted_box(double x0, double y0,
-                                                                      double x1,
-                                                                      double y1) const {
+                                                                      double x1, double y1) const {
   // The lens model is monotonic in r only up to max_radius_sq_: the box must stay inside it.
   const double far_x = std::max(std::abs(x0), std::abs(x1));
   const double far_y = std::max(std::abs(y0), std::abs(y1));
   if (far_x * far_x + far_y * far_y >= max_radius_sq_) return std::nullopt;
   PixelBox box{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-               -std::numeric_limits<double>::infinity(),
-               -std::numeric_limits<double>::infinity()};
+               -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   const auto add = [&](double x, double y) {
     const Eigen::Vector2d d = distort(intrinsics_.distortion, {x, y});
     const double u = intrinsics_.fx_px * d.x() + intrinsics_.cx_px;

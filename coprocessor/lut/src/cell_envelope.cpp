@@ -17,7 +17,7 @@ struct JointAxis {
   Eigen::Vector3d point;      // on the axis, base frame
   Eigen::Vector3d direction;  // unit, base frame
   bool prismatic = false;
-  double half_width = 0.0;    // rad (m for a prismatic joint)
+  double half_width = 0.0;        // rad (m for a prismatic joint)
   double chord_per_radius = 0.0;  // 2 sin(min(half_width, pi) / 2)
 };
 
@@ -50,9 +50,8 @@ CellEnvelope::CellEnvelope(const RobotModel& robot, RobotBalls balls, const Cspa
                                 std::to_string(robot.dof()));
   }
   if (robot_balls_.links.size() != robot.dof()) {
-    throw std::invalid_argument("the ball cover has " +
-                                std::to_string(robot_balls_.links.size()) + " links, the robot " +
-                                std::to_string(robot.dof()));
+    throw std::invalid_argument("the ball cover has " + std::to_string(robot_balls_.links.size()) +
+                                " links, the robot " + std::to_string(robot.dof()));
   }
   if (!std::isfinite(padding_m) || padding_m < 0.0) {
     throw std::invalid_argument("padding must be finite and >= 0 m, got " +

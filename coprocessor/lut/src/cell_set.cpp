@@ -12,7 +12,9 @@ constexpr std::uint64_t kAll = ~std::uint64_t{0};
 // Bits from `first` (0..63) up to the word's end.
 std::uint64_t from_bit(std::uint32_t first) { return kAll << first; }
 // Bits below `end` (1..64).
-std::uint64_t below_bit(std::uint32_t end) { return end == 64 ? kAll : (std::uint64_t{1} << end) - 1; }
+std::uint64_t below_bit(std::uint32_t end) {
+  return end == 64 ? kAll : (std::uint64_t{1} << end) - 1;
+}
 
 // Calls apply(word index, mask) for the words the range begin..end-1 touches.
 template <typename Apply>
@@ -75,7 +77,8 @@ CellIndex CellSet::next_set(CellIndex from) const {
     if (++word == words_.size()) return cell_count_;
     bits = words_[word];
   }
-  const auto found = static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+  const auto found =
+      static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
   return std::min(found, cell_count_);
 }
 

@@ -48,7 +48,8 @@ std::vector<CellToPixelsTable> build_cell_to_pixels_tables(const CellTableBuild&
     std::vector<FeatureRect> rects;
     rects.reserve(total);
     for (auto& chunk : chunk_rects) {
-      for (const std::uint32_t count : chunk[camera].counts) offsets.push_back(offsets.back() + count);
+      for (const std::uint32_t count : chunk[camera].counts)
+        offsets.push_back(offsets.back() + count);
       rects.insert(rects.end(), chunk[camera].rects.begin(), chunk[camera].rects.end());
       chunk[camera] = ChunkRects{};
     }

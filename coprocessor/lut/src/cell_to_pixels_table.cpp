@@ -26,7 +26,11 @@ CellToPixelsTable::CellToPixelsTable(int columns, int rows, std::vector<std::uin
 CellToPixelsTable::CellToPixelsTable(int columns, int rows, std::span<const std::uint64_t> offsets,
                                      std::span<const FeatureRect> rects,
                                      std::shared_ptr<const void> storage)
-    : columns_(columns), rows_(rows), offsets_(offsets), rects_(rects), storage_(std::move(storage)) {
+    : columns_(columns),
+      rows_(rows),
+      offsets_(offsets),
+      rects_(rects),
+      storage_(std::move(storage)) {
   check();
 }
 

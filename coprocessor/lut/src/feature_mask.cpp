@@ -12,7 +12,8 @@ constexpr int kMaxSide = 65535;
 
 // Bits first..last (0..63, inclusive) of a word.
 std::uint64_t bit_span(int first, int last) {
-  const std::uint64_t upto_last = last == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (last + 1)) - 1;
+  const std::uint64_t upto_last =
+      last == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (last + 1)) - 1;
   return upto_last & ~((std::uint64_t{1} << first) - 1);
 }
 

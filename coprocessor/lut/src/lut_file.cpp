@@ -68,7 +68,8 @@ class FileImage {
 
   void add(SectionKind kind, std::uint32_t camera, const void* data, std::size_t size) {
     bytes_.resize((bytes_.size() + 7) & ~std::size_t{7});
-    sections_.push_back(SectionEntry{static_cast<std::uint32_t>(kind), camera, bytes_.size(), size});
+    sections_.push_back(
+        SectionEntry{static_cast<std::uint32_t>(kind), camera, bytes_.size(), size});
     const auto* first = static_cast<const char*>(data);
     bytes_.insert(bytes_.end(), first, first + size);
   }
@@ -105,8 +106,8 @@ class Mapping {
     struct stat info {};
     if (::fstat(fd, &info) != 0 || info.st_size < static_cast<off_t>(sizeof(Header))) {
       ::close(fd);
-      throw LutFileError(path, "too short for a LUT file header (" +
-                                   std::to_string(info.st_size) + " bytes)");
+      throw LutFileError(
+          path, "too short for a LUT file header (" + std::to_string(info.st_size) + " bytes)");
     }
     size_ = static_cast<std::size_t>(info.st_size);
     void* address = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
@@ -136,8 +137,8 @@ Header checked_header(const std::filesystem::path& path, const Mapping& mapping)
   }
   if (header.version != kLutFileVersion) {
     throw LutFileError(path, "format version " + std::to_string(header.version) +
-                                 ", this program reads version " +
-                                 std::to_string(kLutFileVersion) + "; build the tables again");
+                                 ", this program reads version " + std::to_string(kLutFileVersion) +
+                                 "; build the tables again");
   }
   if (header.header_bytes != sizeof(Header) || header.file_bytes != mapping.size()) {
     throw LutFileError(path, "truncated or extended: the header says " +
@@ -309,12 +310,24 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     }
     CameraSections& sections = cameras[entry.camera];
     switch (static_cast<SectionKind>(entry.kind)) {
-      case SectionKind::kCameraName: sections.name = &entry; break;
-      case SectionKind::kPixelOffsets: sections.pixel_offsets = &entry; break;
-      case SectionKind::kPixelBoxes: sections.pixel_boxes = &entry; break;
-      case SectionKind::kCellOffsets: sections.cell_offsets = &entry; break;
-      case SectionKind::kCellRects: sections.cell_rects = &entry; break;
-      case SectionKind::kCameraStats: sections.stats = &entry; break;
+      case SectionKind::kCameraName:
+        sections.name = &entry;
+        break;
+      case SectionKind::kPixelOffsets:
+        sections.pixel_offsets = &entry;
+        break;
+      case SectionKind::kPixelBoxes:
+        sections.pixel_boxes = &entry;
+        break;
+      case SectionKind::kCellOffsets:
+        sections.cell_offsets = &entry;
+        break;
+      case SectionKind::kCellRects:
+        sections.cell_rects = &entry;
+        break;
+      case SectionKind::kCameraStats:
+        sections.stats = &entry;
+        break;
       default:
         throw LutFileError(path, "unknown section kind " + std::to_string(entry.kind));
     }

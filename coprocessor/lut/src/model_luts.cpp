@@ -1,6 +1,5 @@
 #include "safecell/lut/model_luts.hpp"
 
-
 #include "safecell/base/fnv1a.hpp"
 #include "safecell/lut/cell_table_builder.hpp"
 #include "safecell/lut/pixel_table_builder.hpp"
@@ -105,8 +104,8 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
   for (std::size_t camera = 0; camera < cell.cameras.size(); ++camera) {
     const ProgressCallback inversion = [&, camera](double fraction) {
       if (progress) {
-        progress(1, (static_cast<double>(camera) + fraction) /
-                        static_cast<double>(cell.cameras.size()));
+        progress(
+            1, (static_cast<double>(camera) + fraction) / static_cast<double>(cell.cameras.size()));
       }
     };
     PixelToCellsTable pixel_table =

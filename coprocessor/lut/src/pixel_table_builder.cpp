@@ -81,13 +81,15 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
   std::vector<std::uint8_t> box_bytes;
   for (int band = 0; band < rows; band += band_rows) {
     const int band_end = std::min(rows, band + band_rows);
-    const auto band_pixels = static_cast<std::size_t>(band_end - band) * static_cast<std::size_t>(columns);
+    const auto band_pixels =
+        static_cast<std::size_t>(band_end - band) * static_cast<std::size_t>(columns);
     std::vector<CellSet> pixel_cells(band_pixels, CellSet(grid.cell_count()));
     // Gather: one feature row per chunk, so that no two threads write the same bitset.
     parallel_chunks(static_cast<std::size_t>(band_end - band), 1, build.threads,
                     [&](std::size_t, std::size_t begin, std::size_t) {
                       const int row = band + static_cast<int>(begin);
-                      CellSet* row_cells = pixel_cells.data() + begin * static_cast<std::size_t>(columns);
+                      CellSet* row_cells =
+                          pixel_cells.data() + begin * static_cast<std::size_t>(columns);
                       for (CellIndex cell = 0; cell < grid.cell_count(); ++cell) {
                         for (const auto& rect : cell_table.rects_of(cell)) {
                           if (rect.row0 > row || rect.row1 < row) continue;
@@ -100,13 +102,13 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
     // Cut every pixel's cells into boxes, in parallel, then append in pixel order.
     std::vector<std::vector<std::uint8_t>> pixel_boxes(band_pixels);
     std::vector<std::size_t> pixel_box_counts(band_pixels);
-    parallel_chunks(band_pixels, 16, build.threads,
-                    [&](std::size_t, std::size_t begin, std::size_t end) {
-                      for (std::size_t pixel = begin; pixel < end; ++pixel) {
-                        pixel_box_counts[pixel] = append_boxes(pixel_cells[pixel], axes, pixel_boxes[pixel]);
-                        pixel_cells[pixel] = CellSet{};
-                      }
-                    });
+    parallel_chunks(
+        band_pixels, 16, build.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+          for (std::size_t pixel = begin; pixel < end; ++pixel) {
+            pixel_box_counts[pixel] = append_boxes(pixel_cells[pixel], axes, pixel_boxes[pixel]);
+            pixel_cells[pixel] = CellSet{};
+          }
+        });
     for (std::size_t pixel = 0; pixel < band_pixels; ++pixel) {
       offsets.push_back(offsets.back() + pixel_box_counts[pixel]);
       box_bytes.insert(box_bytes.end(), pixel_boxes[pixel].begin(), pixel_boxes[pixel].end());

@@ -42,8 +42,8 @@ void PixelToCellsTable::check() const {
   if (columns_ < 1 || rows_ < 1) throw std::invalid_argument("LUT-2: empty feature grid");
   const std::size_t pixels = static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_);
   if (offsets_.size() != pixels + 1 || offsets_.front() != 0) {
-    throw std::invalid_argument("LUT-2: " + std::to_string(offsets_.size()) +
-                                " offsets for " + std::to_string(pixels) + " pixels");
+    throw std::invalid_argument("LUT-2: " + std::to_string(offsets_.size()) + " offsets for " +
+                                std::to_string(pixels) + " pixels");
   }
   const std::uint32_t bytes_per_box = axes_.bytes_per_box();
   if (offsets_.back() * bytes_per_box != box_bytes_.size()) {

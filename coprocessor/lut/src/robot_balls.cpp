@@ -64,9 +64,9 @@ std::vector<Ball> cover_shapes_with_balls(const std::vector<PlacedShape>& shapes
     if (mesh.triangles.empty()) throw std::invalid_argument("a robot shape has no surface");
     for (const auto& triangle : mesh.triangles) {
       samples.clear();
-      gap_m = std::max(gap_m, sample_triangle(mesh.vertices.at(triangle[0]),
-                                              mesh.vertices.at(triangle[1]),
-                                              mesh.vertices.at(triangle[2]), max_edge_m, samples));
+      gap_m = std::max(gap_m,
+                       sample_triangle(mesh.vertices.at(triangle[0]), mesh.vertices.at(triangle[1]),
+                                       mesh.vertices.at(triangle[2]), max_edge_m, samples));
       for (const auto& point : samples) {
         if (!point.allFinite()) throw std::invalid_argument("a robot shape is not finite");
         const VoxelKey key{static_cast<long>(std::floor(point.x() / voxel_m)),

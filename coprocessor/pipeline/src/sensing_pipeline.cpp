@@ -10,7 +10,8 @@ namespace safecell {
 namespace {
 
 double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace
@@ -18,8 +19,7 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 SensingPipeline::SensingPipeline(const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
                                  const RobotSilhouettes& silhouettes,
                                  const std::vector<cv::Mat>& reference_frames,
-                                 const std::vector<int>& noise_bits,
-                                 const FusionSettings& settings)
+                                 const std::vector<int>& noise_bits, const FusionSettings& settings)
     : cell_(cell), grid_(grid), fusion_(luts, silhouettes, settings) {
   const std::size_t cameras = cell.cameras.size();
   if (reference_frames.size() != cameras || (!noise_bits.empty() && noise_bits.size() != cameras) ||

@@ -35,7 +35,8 @@ SimulatedReference simulated_reference(SimulatedCell& sim, const CellModel& cell
     const auto rendered = sim.render(SimScene{configurations[k], {}}, 1000 + k, 0.0);
     for (std::size_t c = 0; c < rendered.size(); ++c) per_camera[c].push_back(rendered[c]);
   }
-  for (const auto& camera_frames : per_camera) reference.frames.push_back(median_image(camera_frames));
+  for (const auto& camera_frames : per_camera)
+    reference.frames.push_back(median_image(camera_frames));
   return reference;
 }
 

@@ -21,7 +21,8 @@ constexpr double kWallClearance_m = 0.3;
 double percentile(std::vector<double> values, double share) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
-  const auto index = static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size()))) - 1;
+  const auto index =
+      static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size()))) - 1;
   return values[std::min(index, values.size() - 1)];
 }
 
@@ -38,11 +39,13 @@ Scene random_scene(const CellModel& cell, const CspaceGrid& grid, std::mt19937_6
   const double half_x = cell.config.size_m[0] / 2.0 - kWallClearance_m;
   const double half_y = cell.config.size_m[1] / 2.0 - kWallClearance_m;
   const int humans = std::uniform_int_distribution<int>(1, max_humans)(rng);
-  for (int attempt = 0; attempt < 200 && static_cast<int>(scene.humans.size()) < humans; ++attempt) {
+  for (int attempt = 0; attempt < 200 && static_cast<int>(scene.humans.size()) < humans;
+       ++attempt) {
     HumanPose pose;
     pose.position_m = {std::uniform_real_distribution<double>(-half_x, half_x)(rng),
                        std::uniform_real_distribution<double>(-half_y, half_y)(rng)};
-    pose.heading_rad = std::uniform_real_distribution<double>(-std::numbers::pi, std::numbers::pi)(rng);
+    pose.heading_rad =
+        std::uniform_real_distribution<double>(-std::numbers::pi, std::numbers::pi)(rng);
     pose.gait_phase_rad = std::uniform_real_distribution<double>(0.0, 2.0 * std::numbers::pi)(rng);
     pose.arm_raise_rad = std::uniform_real_distribution<double>(0.0, 1.2)(rng);
     const auto body = human_shapes(pose);
@@ -92,7 +95,8 @@ ValidationReport validate_against_ground_truth(
   std::mt19937_64 rng(options.seed);
   for (std::size_t s = 0; s < options.scenes; ++s) {
     const Scene scene = random_scene(cell, grid, rng, options.max_humans);
-    const auto frames = sim.render(SimScene{scene.q, scene.humans}, 10 * s, 0.1 * static_cast<double>(s));
+    const auto frames =
+        sim.render(SimScene{scene.q, scene.humans}, 10 * s, 0.1 * static_cast<double>(s));
     const CellSet& forbidden = pipeline.process(frames, scene.q);
     fusion_ms.push_back(pipeline.times().fusion_ms);
     features_ms.push_back(pipeline.times().features_ms);
@@ -113,8 +117,9 @@ ValidationReport validate_against_ground_truth(
   report.free = totals.free;
   report.false_positives = totals.false_positives;
   report.missed_cases = std::move(totals.missed_cases);
-  report.false_positive_rate =
-      report.free == 0 ? 0.0 : static_cast<double>(report.false_positives) / static_cast<double>(report.free);
+  report.false_positive_rate = report.free == 0 ? 0.0
+                                                : static_cast<double>(report.false_positives) /
+                                                      static_cast<double>(report.free);
   report.phantom_cells = phantom_sum / static_cast<double>(options.scenes);
   report.forbidden_share = forbidden_share_sum / static_cast<double>(options.scenes);
   report.fusion_ms_p99 = percentile(fusion_ms, 0.99);

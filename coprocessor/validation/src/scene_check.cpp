@@ -54,8 +54,7 @@ SceneCheck& SceneCheck::operator+=(const SceneCheck& other) {
 
 SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedCell& sim,
                        const SensingPipeline& pipeline, const SimScene& scene,
-                       std::size_t configurations, std::mt19937_64& rng,
-                       std::size_t scene_index) {
+                       std::size_t configurations, std::mt19937_64& rng, std::size_t scene_index) {
   SceneCheck check;
   // How many cameras saw each human: its feature cells are obstacles there after robot removal.
   check.cameras_seeing.assign(scene.humans.size(), 0);
@@ -122,12 +121,12 @@ SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedC
 }
 
 double estimate_phantom_cells(const CellModel& cell, const CspaceGrid& grid,
-                              const SensingPipeline& pipeline,
-                              const std::vector<HumanPose>& humans, std::size_t samples,
-                              double distance_m, std::mt19937_64& rng) {
+                              const SensingPipeline& pipeline, const std::vector<HumanPose>& humans,
+                              std::size_t samples, double distance_m, std::mt19937_64& rng) {
   const CellSet& critical = pipeline.fusion().critical();
   std::vector<CellIndex> critical_cells;
-  for (CellIndex c = critical.next_set(0); c < critical.cell_count(); c = critical.next_set(c + 1)) {
+  for (CellIndex c = critical.next_set(0); c < critical.cell_count();
+       c = critical.next_set(c + 1)) {
     critical_cells.push_back(c);
   }
   if (critical_cells.empty() || humans.empty() || samples == 0) return 0.0;
@@ -140,7 +139,8 @@ double estimate_phantom_cells(const CellModel& cell, const CspaceGrid& grid,
   const std::size_t checked = std::min(samples, critical_cells.size());
   std::uniform_int_distribution<std::size_t> pick(0, critical_cells.size() - 1);
   for (std::size_t i = 0; i < checked; ++i) {
-    const JointAngles centre = grid.cell_centre(grid.coords_of(critical_cells[pick(rng)]).value()).value();
+    const JointAngles centre =
+        grid.cell_centre(grid.coords_of(critical_cells[pick(rng)]).value()).value();
     const std::vector<double> q(centre.rad, centre.rad + grid.joint_count());
     if (truth.min_distance_m(collision_shapes_at(*cell.robot, q)) > distance_m) ++phantoms;
   }

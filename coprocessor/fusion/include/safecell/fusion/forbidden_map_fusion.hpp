@@ -46,12 +46,22 @@ class ForbiddenMapFusion {
 
   [[nodiscard]] const CellSet& forbidden() const { return forbidden_; }
   [[nodiscard]] const CellSet& critical() const { return critical_; }
-  [[nodiscard]] const CellSet& suspicious(std::size_t camera) const { return suspicious_.at(camera); }
+  [[nodiscard]] const CellSet& suspicious(std::size_t camera) const {
+    return suspicious_.at(camera);
+  }
   // The obstacle pixels of one camera in the last cycle (blocked minus the robot).
-  [[nodiscard]] const FeatureMask& obstacles(std::size_t camera) const { return obstacles_.at(camera); }
+  [[nodiscard]] const FeatureMask& obstacles(std::size_t camera) const {
+    return obstacles_.at(camera);
+  }
+  // The robot's silhouette (LUT-1 of its cell) in one camera in the last cycle.
+  [[nodiscard]] const FeatureMask& robot_silhouette(std::size_t camera) const {
+    return robot_.at(camera);
+  }
   [[nodiscard]] const FusionCounts& counts() const { return counts_; }
   // Cells each camera can see at all (LUT-2 of some pixel holds them).
-  [[nodiscard]] const CellSet& observable(std::size_t camera) const { return observable_.at(camera); }
+  [[nodiscard]] const CellSet& observable(std::size_t camera) const {
+    return observable_.at(camera);
+  }
   [[nodiscard]] std::size_t camera_count() const { return luts_.cameras.size(); }
   [[nodiscard]] const FusionSettings& settings() const { return settings_; }
 

@@ -28,8 +28,7 @@ class CellEnvelope {
  public:
   // padding_m: added to every ball (calibration and model error). Throws std::invalid_argument
   // when the grid's joint count is not the robot's, or the padding is negative or not finite.
-  CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid,
-               double padding_m);
+  CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid, double padding_m);
 
   // The envelope of one cell, in the robot base frame (= the cell frame), into `balls` (cleared
   // first). Thread-safe; `balls` is the caller's scratch and keeps its capacity.

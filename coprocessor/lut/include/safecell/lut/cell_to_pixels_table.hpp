@@ -44,9 +44,7 @@ class CellToPixelsTable {
 
   [[nodiscard]] std::span<const std::uint64_t> offsets() const { return offsets_; }
   [[nodiscard]] std::span<const FeatureRect> rects() const { return rects_; }
-  [[nodiscard]] std::size_t bytes() const {
-    return offsets_.size_bytes() + rects_.size_bytes();
-  }
+  [[nodiscard]] std::size_t bytes() const { return offsets_.size_bytes() + rects_.size_bytes(); }
 
  private:
   void check() const;

@@ -38,7 +38,9 @@ class FeatureMask {
   [[nodiscard]] bool test(int column, int row) const {
     return ((row_words(row)[column >> 6] >> (column & 63)) & 1U) != 0;
   }
-  void set(int column, int row) { row_words(row)[column >> 6] |= std::uint64_t{1} << (column & 63); }
+  void set(int column, int row) {
+    row_words(row)[column >> 6] |= std::uint64_t{1} << (column & 63);
+  }
   void reset(int column, int row) {
     row_words(row)[column >> 6] &= ~(std::uint64_t{1} << (column & 63));
   }

@@ -20,9 +20,9 @@ namespace safecell {
 struct CachedLuts {
   LutSet set;
   std::filesystem::path file;
-  bool built = false;      // false: loaded from the cache
-  double build_s = 0.0;    // when built
-  std::string note;        // why a cached file was not used, if one was refused
+  bool built = false;    // false: loaded from the cache
+  double build_s = 0.0;  // when built
+  std::string note;      // why a cached file was not used, if one was refused
 };
 
 // Loads `<folder>/<fingerprint>.sclut`, or builds the tables and stores them there. A cached file

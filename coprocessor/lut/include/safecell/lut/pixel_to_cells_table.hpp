@@ -30,8 +30,8 @@ class PixelToCellsTable {
   PixelToCellsTable(const CspaceGrid& grid, int columns, int rows,
                     std::vector<std::uint64_t> offsets, std::vector<std::uint8_t> box_bytes);
   PixelToCellsTable(const CspaceGrid& grid, int columns, int rows,
-                    std::span<const std::uint64_t> offsets,
-                    std::span<const std::uint8_t> box_bytes, std::shared_ptr<const void> storage);
+                    std::span<const std::uint64_t> offsets, std::span<const std::uint8_t> box_bytes,
+                    std::shared_ptr<const void> storage);
 
   [[nodiscard]] int columns() const { return columns_; }
   [[nodiscard]] int rows() const { return rows_; }

@@ -13,7 +13,7 @@
 namespace safecell {
 
 struct SimulatedReference {
-  std::vector<cv::Mat> frames;  // per camera, CV_8UC1
+  std::vector<cv::Mat> frames;                      // per camera, CV_8UC1
   std::vector<std::vector<double>> configurations;  // the chosen robot configurations
   std::size_t candidates = 0;
 };

@@ -46,7 +46,7 @@ struct ValidationReport {
   std::size_t free = 0;
   std::size_t false_positives = 0;
   double false_positive_rate = 0.0;
-  double phantom_cells = 0.0;  // mean per scene (estimated from samples)
+  double phantom_cells = 0.0;    // mean per scene (estimated from samples)
   double forbidden_share = 0.0;  // mean share of the grid forbidden per scene
   double fusion_ms_p99 = 0.0;
   double features_ms_p99 = 0.0;

@@ -35,7 +35,8 @@ struct SceneCheck {
 };
 
 // Joint values drawn uniformly within the grid's ranges.
-[[nodiscard]] std::vector<double> random_configuration(const CspaceGrid& grid, std::mt19937_64& rng);
+[[nodiscard]] std::vector<double> random_configuration(const CspaceGrid& grid,
+                                                       std::mt19937_64& rng);
 
 // `pipeline` has just processed the frames of the scene (robot at scene.q, the humans).
 [[nodiscard]] SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid,

@@ -1,0 +1,235 @@
+#include "safecell/cli/demo_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <random>
+
+#include "cspace_pictures.hpp"
+#include "lut_loading.hpp"
+#include "png_output.hpp"
+#include "progress_bar.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/cli/text_table.hpp"
+#include "safecell/cli/validate_command.hpp"
+#include "safecell/files/atomic_write.hpp"
+#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/pipeline/simulated_reference.hpp"
+#include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim/human_walker.hpp"
+#include "safecell/validation/scene_check.hpp"
+#include "scene_options.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kHumanEnters_s = 1.0;
+constexpr double kHumanSpeed_m_s = 1.0;
+constexpr std::size_t kReferenceFrames = 9;
+
+// The robot's path: every joint swings about a middle value, each at its own period, kept inside
+// the grid's ranges.
+std::vector<double> robot_at(const CspaceGrid& grid, double time_s) {
+  struct Swing {
+    double middle_rad, amplitude_rad, period_s;
+  };
+  constexpr Swing kSwings[] = {{0.0, 1.0, 10.0}, {0.2, 0.4, 7.0}, {0.9, 0.5, 5.0},
+                               {0.0, 0.8, 9.0},  {0.6, 0.4, 4.0}, {0.0, 1.0, 6.0}};
+  std::vector<double> q(grid.joint_count());
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const Swing swing = j < std::size(kSwings) ? kSwings[j] : Swing{0.0, 0.0, 1.0};
+    const double value = swing.middle_rad + swing.amplitude_rad * std::sin(2.0 * std::numbers::pi *
+                                                                           time_s / swing.period_s);
+    const JointSpec& joint = grid.joint(j);
+    const double margin = 1e-6 * (joint.hi_rad - joint.lo_rad);
+    q[j] = std::clamp(value, joint.lo_rad + margin, joint.hi_rad - margin);
+  }
+  return q;
+}
+
+// A person walking in from one corner, past the robot within reach of its arm, out to another.
+HumanWalker person_walking(const CellModel& cell) {
+  const double x = cell.config.size_m[0] / 2.0 - 0.3;
+  const double y = cell.config.size_m[1] / 2.0 - 0.3;
+  return HumanWalker({{x, -y}, {0.9, -0.5}, {0.9, 0.5}, {x, y}}, kHumanSpeed_m_s, 0.3);
+}
+
+double percentile(std::vector<double> values, double share) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto index =
+      static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size())));
+  return values[std::min(values.size() - 1, index == 0 ? 0 : index - 1)];
+}
+
+std::string numbered(const char* stem, std::size_t cycle, const char* suffix) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s%04zu%s", stem, cycle, suffix);
+  return name;
+}
+
+void write_views(const fs::path& folder, std::size_t cycle, const std::vector<cv::Mat>& frames,
+                 const SensingPipeline& pipeline, const CellModel& cell) {
+  std::vector<cv::Mat> tiles;
+  for (std::size_t c = 0; c < frames.size(); ++c) {
+    const auto& observation = pipeline.observations()[c];
+    tiles.push_back(labelled(
+        camera_overlay(frames[c], observation.blocked, pipeline.fusion().robot_silhouette(c),
+                       pipeline.fusion().obstacles(c), cell.cameras[c].name()),
+        0.5, ""));
+  }
+  write_png(folder / numbered("cycle_", cycle, ".png"), contact_sheet(tiles, 2));
+}
+
+void write_slices(const fs::path& folder, std::size_t cycle, const CspaceGrid& grid,
+                  const SensingPipeline& pipeline, const CellSet& static_cells) {
+  const CellSet& forbidden = pipeline.fusion().forbidden();
+  const CellIndex at = pipeline.robot_cell();
+  const std::string title = "forbidden cells, cycle " + std::to_string(cycle);
+  write_png(folder / numbered("cycle_", cycle, "_joints_1_2.png"),
+            forbidden_slice(grid, forbidden, static_cells, at, 0, 1, title));
+  if (grid.joint_count() > 2 && grid.cells_along(2) > 1) {
+    write_png(folder / numbered("cycle_", cycle, "_joints_2_3.png"),
+              forbidden_slice(grid, forbidden, static_cells, at, 1, 2, title));
+  }
+}
+
+}  // namespace
+
+int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
+  if (!(options.seconds > 0.0 && options.seconds <= 3600.0)) {
+    bad_option("--seconds", std::to_string(options.seconds), "a duration of 0..3600 s");
+  }
+  if (!(options.fps > 0.0 && options.fps <= 100.0)) {
+    bad_option("--fps", std::to_string(options.fps), "a frame rate of 0..100 per second");
+  }
+  const CellModel cell = load_cell_model(load_cell_file_or_default(options.cell_path));
+  const CspaceGrid grid = make_grid(cell.config);
+  const fs::path out_dir(options.out_dir);
+  for (const char* sub : {"views", "slices"}) fs::create_directories(out_dir / sub);
+
+  const CachedLuts luts = cell_luts(cell, grid, options.lut_cache, err);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  SensorSettings sensor;
+  sensor.seed = options.seed;
+  SimulatedCell sim = simulate_cell(cell, sensor);
+  err << "reference images: median of " << kReferenceFrames << " frames of the empty cell\n";
+  const SimulatedReference reference =
+      simulated_reference(sim, cell, kReferenceFrames, options.seed);
+  FusionSettings fusion;
+  fusion.camera_threshold = cell.camera_threshold;
+  SensingPipeline pipeline(cell, grid, luts.set, silhouettes, reference.frames, {}, fusion);
+  const HumanWalker walker = person_walking(cell);
+
+  const auto cycles = static_cast<std::size_t>(std::ceil(options.seconds * options.fps));
+  const bool interactive = &err == &std::cerr && ProgressBar::stderr_is_terminal();
+  std::mt19937_64 rng(options.seed);
+  SceneCheck checks;
+  std::vector<double> fusion_ms;
+  std::vector<double> features_ms;
+  std::size_t forbidden_max = 0;
+  double forbidden_sum = 0.0;
+  nlohmann::ordered_json timeline = nlohmann::ordered_json::array();
+  for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
+    const double time_s = static_cast<double>(cycle) / options.fps;
+    SimScene scene{robot_at(grid, time_s), {}};
+    if (time_s >= kHumanEnters_s && time_s - kHumanEnters_s <= walker.arrival_time_s()) {
+      scene.humans.push_back(walker.pose_at(time_s - kHumanEnters_s));
+    }
+    const std::vector<cv::Mat> frames = sim.render(scene, cycle, time_s);
+    const CellSet& forbidden = pipeline.process(frames, scene.q);
+    const SceneCheck check =
+        check_scene(cell, grid, sim, pipeline, scene, options.checks_per_cycle, rng, cycle);
+    checks += check;
+    fusion_ms.push_back(pipeline.times().fusion_ms);
+    features_ms.push_back(pipeline.times().features_ms);
+    const std::size_t forbidden_cells = forbidden.count();
+    forbidden_max = std::max(forbidden_max, forbidden_cells);
+    forbidden_sum += static_cast<double>(forbidden_cells);
+
+    std::string blocked;
+    std::vector<std::size_t> blocked_per_camera;
+    for (const auto& observation : pipeline.observations()) {
+      blocked_per_camera.push_back(observation.blocked.count());
+      blocked += (blocked.empty() ? "" : "/") + std::to_string(observation.blocked.count());
+    }
+    timeline.push_back({{"cycle", cycle},
+                        {"time_s", time_s},
+                        {"humans", scene.humans.size()},
+                        {"blocked_cells", blocked_per_camera},
+                        {"obstacle_cells", pipeline.fusion().counts().obstacle_pixels},
+                        {"forbidden_cells", forbidden_cells},
+                        {"robot_cell_forbidden", forbidden.test(pipeline.robot_cell())},
+                        {"features_ms", pipeline.times().features_ms},
+                        {"fusion_ms", pipeline.times().fusion_ms}});
+    const std::string status =
+        "cycle " + std::to_string(cycle) + "  t " + fixed(time_s, 1) + " s  humans " +
+        std::to_string(scene.humans.size()) + "  blocked " + blocked + "  forbidden " +
+        grouped(forbidden_cells) + " (" +
+        fixed(100.0 * static_cast<double>(forbidden_cells) / grid.cell_count(), 1) +
+        " %)  features " + fixed(pipeline.times().features_ms, 1) + " ms  fusion " +
+        fixed(pipeline.times().fusion_ms, 1) + " ms  missed " + std::to_string(checks.missed);
+    if (interactive) {
+      err << '\r' << status << "   " << std::flush;
+    } else if (cycle % static_cast<std::size_t>(std::max(1.0, options.fps)) == 0) {
+      err << status << '\n';
+    }
+    if (options.views_every > 0 && cycle % static_cast<std::size_t>(options.views_every) == 0) {
+      write_views(out_dir / "views", cycle, frames, pipeline, cell);
+      write_slices(out_dir / "slices", cycle, grid, pipeline, luts.set.static_cells);
+    }
+  }
+  if (interactive) err << '\n';
+
+  std::vector<CellSet> observable;
+  for (std::size_t c = 0; c < cell.cameras.size(); ++c)
+    observable.push_back(pipeline.fusion().observable(c));
+  write_png(out_dir / "observability_joints_1_2.png",
+            observability_slice(grid, observable, pipeline.robot_cell(), 0, 1,
+                                "cameras that see each cell (white: all)"));
+
+  nlohmann::ordered_json summary;
+  summary["cycles"] = cycles;
+  summary["seconds"] = options.seconds;
+  summary["fps"] = options.fps;
+  summary["cell"] = cell.config.name;
+  summary["c_space_cells"] = grid.cell_count();
+  summary["fusion_ms_p50"] = percentile(fusion_ms, 0.5);
+  summary["fusion_ms_p99"] = percentile(fusion_ms, 0.99);
+  summary["features_ms_p99"] = percentile(features_ms, 0.99);
+  summary["forbidden_cells_max"] = forbidden_max;
+  summary["forbidden_cells_mean"] = forbidden_sum / static_cast<double>(cycles);
+  summary["configs_checked"] = checks.configs_checked;
+  summary["colliding_checked"] = checks.colliding;
+  summary["missed"] = checks.missed;
+  summary["unseen"] = checks.unseen;
+  summary["false_positive_rate"] = checks.free == 0 ? 0.0
+                                                    : static_cast<double>(checks.false_positives) /
+                                                          static_cast<double>(checks.free);
+  summary["lut_file"] = luts.file.string();
+  summary["lut_built_now"] = luts.built;
+  summary["timeline"] = std::move(timeline);
+  const std::string text = summary.dump(2) + "\n";
+  write_file_atomically(out_dir / "summary.json", text);
+
+  out << "demo: " << cycles << " cycles of " << fixed(options.seconds, 1) << " s at "
+      << fixed(options.fps, 0) << " frames/s on " << cell.config.name << "\n"
+      << "  fusion p50 " << fixed(percentile(fusion_ms, 0.5), 2) << " ms, p99 "
+      << fixed(percentile(fusion_ms, 0.99), 2) << " ms; features p99 "
+      << fixed(percentile(features_ms, 0.99), 2) << " ms\n"
+      << "  forbidden cells: at most " << grouped(forbidden_max) << " of "
+      << grouped(grid.cell_count()) << "\n"
+      << "  ground truth: " << grouped(checks.configs_checked) << " configurations checked, "
+      << checks.colliding << " colliding, missed " << checks.missed << "\n"
+      << "  report: " << out_dir.string() << " (summary.json, views/, slices/, observability)\n";
+  return checks.missed == 0 ? 0 : kExitValidationFailed;
+}
+
+}  // namespace safecell

@@ -1,0 +1,110 @@
+#include "safecell/pipeline/sensing_pipeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+
+#include "model_fixture.hpp"
+#include "safecell/lut/model_luts.hpp"
+#include "safecell/pipeline/simulated_reference.hpp"
+#include "safecell/sim/cell_simulation.hpp"
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+class SensingPipelineTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    cell_ = new CellModel(test::coarse_default_cell());
+    grid_ = new CspaceGrid(make_grid(cell_->config));
+    luts_ = new LutSet(build_model_luts(*cell_, *grid_));
+    silhouettes_ = new ModelSilhouettes(*cell_, *grid_, ModelLutOptions{});
+    sim_ = new SimulatedCell(simulate_cell(*cell_, SensorSettings{}));
+    reference_ = new std::vector<cv::Mat>(simulated_reference(*sim_, *cell_, 9, 3).frames);
+  }
+  static void TearDownTestSuite() {
+    delete reference_;
+    delete sim_;
+    delete silhouettes_;
+    delete luts_;
+    delete grid_;
+    delete cell_;
+  }
+  static SensingPipeline pipeline() {
+    return SensingPipeline(*cell_, *grid_, *luts_, *silhouettes_, *reference_, {},
+                           FusionSettings{});
+  }
+
+  static CellModel* cell_;
+  static CspaceGrid* grid_;
+  static LutSet* luts_;
+  static ModelSilhouettes* silhouettes_;
+  static SimulatedCell* sim_;
+  static std::vector<cv::Mat>* reference_;
+};
+
+CellModel* SensingPipelineTest::cell_ = nullptr;
+CspaceGrid* SensingPipelineTest::grid_ = nullptr;
+LutSet* SensingPipelineTest::luts_ = nullptr;
+ModelSilhouettes* SensingPipelineTest::silhouettes_ = nullptr;
+SimulatedCell* SensingPipelineTest::sim_ = nullptr;
+std::vector<cv::Mat>* SensingPipelineTest::reference_ = nullptr;
+
+TEST_F(SensingPipelineTest, TheRobotAloneIsNoObstacle) {
+  test::PropertyRun run(10);
+  SensingPipeline sensing = pipeline();
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto q = test::configuration_in(*grid_, any_cell(run.rng()), run.rng());
+    const CellSet& forbidden = sensing.process(
+        sim_->render(SimScene{q, {}}, 100U + static_cast<std::uint64_t>(i), 0.0), q);
+    for (std::size_t c = 0; c < cell_->cameras.size(); ++c) {
+      EXPECT_EQ(sensing.fusion().counts().obstacle_pixels[c], 0U)
+          << "camera " << c << " sample " << i;
+    }
+    EXPECT_EQ(forbidden, luts_->static_cells);
+  }
+}
+
+TEST_F(SensingPipelineTest, APersonIsSeenAndForbidsCells) {
+  SensingPipeline sensing = pipeline();
+  // The arm turned away from the person, who stands in the far corner.
+  const std::vector<double> q{0.78, 0.0, 1.0, 0.0, 0.5, 0.0};
+  HumanPose person;
+  person.position_m = {-1.6, -1.6};
+  const CellSet& forbidden = sensing.process(sim_->render(SimScene{q, {person}}, 7, 0.0), q);
+  int seeing = 0;
+  for (const std::size_t pixels : sensing.fusion().counts().obstacle_pixels)
+    seeing += pixels > 0 ? 1 : 0;
+  EXPECT_GE(seeing, 2);
+  EXPECT_GT(forbidden.count(), luts_->static_cells.count());
+  EXPECT_FALSE(forbidden.test(sensing.robot_cell())) << "the robot is not its own obstacle";
+}
+
+TEST_F(SensingPipelineTest, AMissingFrameMakesTheViewUnknown) {
+  SensingPipeline sensing = pipeline();
+  const std::vector<double> q{0.0, 0.0, 1.0, 0.0, 0.5, 0.0};
+  auto frames = sim_->render(SimScene{q, {}}, 3, 0.0);
+  frames[2] = cv::Mat();
+  const CellSet& forbidden = sensing.process(frames, q);
+  EXPECT_FALSE(sensing.observations()[2].known);
+  EXPECT_TRUE(sensing.observations()[1].known);
+  EXPECT_EQ(forbidden, luts_->static_cells) << "one unknown camera is below the threshold of 2";
+}
+
+TEST_F(SensingPipelineTest, BadInputIsRefused) {
+  SensingPipeline sensing = pipeline();
+  const std::vector<double> q{0.0, 0.0, 1.0, 0.0, 0.5, 0.0};
+  auto frames = sim_->render(SimScene{q, {}}, 3, 0.0);
+  EXPECT_THROW(sensing.process({frames[0]}, q), std::invalid_argument);
+  EXPECT_THROW(sensing.process(frames, {0.0, 0.0}), std::invalid_argument);
+  EXPECT_THROW(sensing.process(frames, {9.0, 0.0, 1.0, 0.0, 0.5, 0.0}), std::out_of_range);
+  EXPECT_THROW(SensingPipeline(*cell_, *grid_, *luts_, *silhouettes_, {(*reference_)[0]}, {},
+                               FusionSettings{}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace safecell

@@ -1,0 +1,51 @@
+#include "safecell/validation/ground_truth_validation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "model_fixture.hpp"
+#include "safecell/lut/model_luts.hpp"
+
+namespace safecell {
+namespace {
+
+TEST(GroundTruthValidation, NoCollisionWithASeenPersonIsMissed) {
+  const CellModel cell = test::coarse_default_cell();
+  const CspaceGrid grid = make_grid(cell.config);
+  const LutSet luts = build_model_luts(cell, grid);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  ValidationOptions options;
+  options.scenes = 6;
+  options.seed = 11;
+  options.configurations_per_scene = 150;
+  options.phantom_samples = 20;
+  std::size_t scenes_done = 0;
+  const ValidationReport report =
+      validate_against_ground_truth(cell, grid, luts, silhouettes, options,
+                                    [&](std::size_t done, std::size_t) { scenes_done = done; });
+  EXPECT_EQ(scenes_done, options.scenes);
+  EXPECT_EQ(report.configs_checked, options.scenes * options.configurations_per_scene);
+  EXPECT_GT(report.colliding, 10U) << "the scenes must test collisions at all";
+  EXPECT_EQ(report.missed, 0U);
+  EXPECT_EQ(report.free + report.colliding, report.configs_checked);
+  EXPECT_GE(report.false_positive_rate, 0.0);
+  EXPECT_LE(report.false_positive_rate, 1.0);
+  EXPECT_GT(report.fusion_ms_p99, 0.0);
+}
+
+TEST(GroundTruthValidation, AbsurdOptionsAreRefused) {
+  const CellModel cell = test::coarse_default_cell();
+  const CspaceGrid grid = make_grid(cell.config);
+  const LutSet luts = build_model_luts(cell, grid);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  ValidationOptions options;
+  options.scenes = 0;
+  EXPECT_THROW((void)validate_against_ground_truth(cell, grid, luts, silhouettes, options),
+               std::invalid_argument);
+  options.scenes = 1;
+  options.max_humans = 0;
+  EXPECT_THROW((void)validate_against_ground_truth(cell, grid, luts, silhouettes, options),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace safecell
