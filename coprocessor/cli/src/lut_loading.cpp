@@ -5,11 +5,15 @@
 #include "progress_bar.hpp"
 
 namespace safecell {
+namespace {
+
+constexpr const char* kStages[kLutBuildStages] = {"building LUT-1 silhouettes", "building LUT-2",
+                                                  "static obstacles"};
+
+}  // namespace
 
 CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const std::string& cache_folder,
                      std::ostream& err) {
-  static const char* const kStages[kLutBuildStages] = {"building LUT-1 silhouettes",
-                                                       "building LUT-2", "static obstacles"};
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   CachedLuts luts = model_luts_cached(
       cell, grid, ModelLutOptions{},

@@ -15,7 +15,7 @@ constexpr int kBarWidth = 30;
 }  // namespace
 
 ProgressBar::ProgressBar(std::ostream& out, bool interactive)
-    : out_(out), interactive_(interactive), stage_start_(Clock::now()), last_draw_() {}
+    : out_(out), interactive_(interactive), stage_start_(Clock::now()) {}
 
 ProgressBar::~ProgressBar() { finish(); }
 

@@ -59,8 +59,10 @@ const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observ
     for (int row = 0; row < obstacles.rows(); ++row) {
       for (int column = 0; column < obstacles.columns(); ++column) {
         if (!obstacles.test(column, row)) continue;
-        table.for_each_cell(static_cast<std::size_t>(row * obstacles.columns() + column),
-                            [&](CellIndex cell) { count_cell(cell, stamp); });
+        const std::size_t pixel =
+            static_cast<std::size_t>(row) * static_cast<std::size_t>(obstacles.columns()) +
+            static_cast<std::size_t>(column);
+        table.for_each_cell(pixel, [&](CellIndex cell) { count_cell(cell, stamp); });
       }
     }
   }
