@@ -58,10 +58,10 @@ CellSet dense_oracle(const LutSet& luts, const ModelSilhouettes& silhouettes,
 }
 
 TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
-  const CellModel cell = test::coarse_default_cell();
-  const CspaceGrid grid = make_grid(cell.config);
-  const LutSet luts = build_model_luts(cell, grid);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const test::CoarseTables tables;
+  const CspaceGrid& grid = tables.grid;
+  const LutSet& luts = tables.luts;
+  const ModelSilhouettes& silhouettes = tables.silhouettes;
   test::PropertyRun run(24);
   std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
   int nonempty = 0;
@@ -88,10 +88,10 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
 }
 
 TEST(FusionEquivalence, UnknownCameraMarksEverythingItCanSee) {
-  const CellModel cell = test::coarse_default_cell();
-  const CspaceGrid grid = make_grid(cell.config);
-  const LutSet luts = build_model_luts(cell, grid);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const test::CoarseTables tables;
+  const CspaceGrid& grid = tables.grid;
+  const LutSet& luts = tables.luts;
+  const ModelSilhouettes& silhouettes = tables.silhouettes;
   FusionSettings settings;
   settings.camera_threshold = 1;
   ForbiddenMapFusion fusion(luts, silhouettes, settings);
@@ -109,10 +109,10 @@ TEST(FusionEquivalence, UnknownCameraMarksEverythingItCanSee) {
 }
 
 TEST(FusionEquivalence, BadInputsAreRefused) {
-  const CellModel cell = test::coarse_default_cell();
-  const CspaceGrid grid = make_grid(cell.config);
-  const LutSet luts = build_model_luts(cell, grid);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const test::CoarseTables tables;
+  const CspaceGrid& grid = tables.grid;
+  const LutSet& luts = tables.luts;
+  const ModelSilhouettes& silhouettes = tables.silhouettes;
   FusionSettings settings;
   settings.camera_threshold = 5;
   EXPECT_THROW(ForbiddenMapFusion(luts, silhouettes, settings), std::invalid_argument);

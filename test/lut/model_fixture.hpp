@@ -9,6 +9,7 @@
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/lut/model_luts.hpp"
 
 namespace safecell::test {
 
@@ -18,6 +19,14 @@ inline CellModel coarse_default_cell() {
   config.joints.at(3).discretised = false;  // its l_i (0.12 m) is below m_max / 2
   return load_cell_model(config);
 }
+
+// The coarse default cell with its model-mode tables and silhouettes.
+struct CoarseTables {
+  CellModel cell = coarse_default_cell();
+  CspaceGrid grid = make_grid(cell.config);
+  LutSet luts = build_model_luts(cell, grid);
+  ModelSilhouettes silhouettes{cell, grid, ModelLutOptions{}};
+};
 
 // A configuration anywhere inside the cell (joints kept whole: anywhere in their range).
 inline std::vector<double> configuration_in(const CspaceGrid& grid, CellIndex cell,

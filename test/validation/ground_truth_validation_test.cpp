@@ -9,10 +9,8 @@ namespace safecell {
 namespace {
 
 TEST(GroundTruthValidation, NoCollisionWithASeenPersonIsMissed) {
-  const CellModel cell = test::coarse_default_cell();
-  const CspaceGrid grid = make_grid(cell.config);
-  const LutSet luts = build_model_luts(cell, grid);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const test::CoarseTables tables;
+  const auto& [cell, grid, luts, silhouettes] = tables;
   ValidationOptions options;
   options.scenes = 6;
   options.seed = 11;
@@ -33,10 +31,8 @@ TEST(GroundTruthValidation, NoCollisionWithASeenPersonIsMissed) {
 }
 
 TEST(GroundTruthValidation, AbsurdOptionsAreRefused) {
-  const CellModel cell = test::coarse_default_cell();
-  const CspaceGrid grid = make_grid(cell.config);
-  const LutSet luts = build_model_luts(cell, grid);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const test::CoarseTables tables;
+  const auto& [cell, grid, luts, silhouettes] = tables;
   ValidationOptions options;
   options.scenes = 0;
   EXPECT_THROW((void)validate_against_ground_truth(cell, grid, luts, silhouettes, options),

@@ -1,6 +1,5 @@
 #include "safecell/cli/cell_info_command.hpp"
 
-#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "safecell/base/freestanding_math.hpp"
@@ -13,12 +12,6 @@ namespace safecell {
 namespace {
 
 double degrees(double radians) { return radians * 180.0 / kPi; }
-
-std::string hex64(std::uint64_t value) {
-  char text[19];
-  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
-  return text;
-}
 
 // A joint whose farthest point stays within m_max of its axis moves the robot little: sweeping it
 // inside every cell costs less than discretising it.

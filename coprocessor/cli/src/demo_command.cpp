@@ -22,6 +22,7 @@
 #include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/human_walker.hpp"
+#include "safecell/validation/percentile.hpp"
 #include "safecell/validation/scene_check.hpp"
 #include "scene_options.hpp"
 
@@ -59,14 +60,6 @@ HumanWalker person_walking(const CellModel& cell) {
   const double x = cell.config.size_m[0] / 2.0 - 0.3;
   const double y = cell.config.size_m[1] / 2.0 - 0.3;
   return HumanWalker({{x, -y}, {0.9, -0.5}, {0.9, 0.5}, {x, y}}, kHumanSpeed_m_s, 0.3);
-}
-
-double percentile(std::vector<double> values, double share) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto index =
-      static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size())));
-  return values[std::min(values.size() - 1, index == 0 ? 0 : index - 1)];
 }
 
 std::string numbered(const char* stem, std::size_t cycle, const char* suffix) {

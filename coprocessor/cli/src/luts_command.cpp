@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -27,12 +26,6 @@ constexpr double kPaperBytesPerCamera = 50e6;
 
 const char* const kStageNames[kLutBuildStages] = {"LUT-1 silhouettes", "LUT-2 inversion",
                                                   "static obstacles"};
-
-std::string hex64(std::uint64_t value) {
-  char text[19];
-  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
-  return text;
-}
 
 std::string megabytes(std::uint64_t bytes) { return fixed(static_cast<double>(bytes) / 1e6, 2); }
 

@@ -11,20 +11,13 @@
 #include "safecell/robot/kinematics.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/ground_truth.hpp"
+#include "safecell/validation/percentile.hpp"
 #include "safecell/validation/scene_check.hpp"
 
 namespace safecell {
 namespace {
 
 constexpr double kWallClearance_m = 0.3;
-
-double percentile(std::vector<double> values, double share) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const auto index =
-      static_cast<std::size_t>(std::ceil(share * static_cast<double>(values.size()))) - 1;
-  return values[std::min(index, values.size() - 1)];
-}
 
 struct Scene {
   std::vector<double> q;
@@ -87,7 +80,6 @@ ValidationReport validate_against_ground_truth(
   SensingPipeline pipeline(cell, grid, luts, silhouettes, reference.frames, {}, options.fusion);
 
   ValidationReport report;
-  SceneCheck totals;
   std::vector<double> fusion_ms;
   std::vector<double> features_ms;
   double phantom_sum = 0.0;
@@ -104,22 +96,13 @@ ValidationReport validate_against_ground_truth(
 
     const SceneCheck check = check_scene(cell, grid, sim, pipeline, SimScene{scene.q, scene.humans},
                                          options.configurations_per_scene, rng, s);
-    totals += check;
+    report += check;
     phantom_sum += estimate_phantom_cells(cell, grid, pipeline, scene.humans,
                                           options.phantom_samples, options.phantom_distance_m, rng);
     if (progress) progress(s + 1, options.scenes);
   }
   report.scenes = options.scenes;
-  report.configs_checked = totals.configs_checked;
-  report.colliding = totals.colliding;
-  report.missed = totals.missed;
-  report.unseen = totals.unseen;
-  report.free = totals.free;
-  report.false_positives = totals.false_positives;
-  report.missed_cases = std::move(totals.missed_cases);
-  report.false_positive_rate = report.free == 0 ? 0.0
-                                                : static_cast<double>(report.false_positives) /
-                                                      static_cast<double>(report.free);
+  report.false_positive_rate = report.SceneCheck::false_positive_rate();
   report.phantom_cells = phantom_sum / static_cast<double>(options.scenes);
   report.forbidden_share = forbidden_share_sum / static_cast<double>(options.scenes);
   report.fusion_ms_p99 = percentile(fusion_ms, 0.99);

@@ -1,6 +1,7 @@
 #pragma once
 // Aligned plain-text tables for terminal reports.
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -26,5 +27,7 @@ class TextTable {
 std::string fixed(double value, int decimals);
 // 165375 -> "165,375".
 std::string grouped(unsigned long long value);
+// A 64-bit fingerprint as "0x" and 16 hex digits (JSON numbers lose precision above 2^53).
+std::string hex64(std::uint64_t value);
 
 }  // namespace safecell

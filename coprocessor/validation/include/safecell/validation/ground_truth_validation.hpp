@@ -37,20 +37,14 @@ struct ValidationOptions {
   FusionSettings fusion;
 };
 
-struct ValidationReport {
+// The checks of every scene added up (scene_check.hpp), and figures over the scenes.
+struct ValidationReport : SceneCheck {
   std::size_t scenes = 0;
-  std::size_t configs_checked = 0;
-  std::size_t colliding = 0;
-  std::size_t missed = 0;
-  std::size_t unseen = 0;
-  std::size_t free = 0;
-  std::size_t false_positives = 0;
   double false_positive_rate = 0.0;
   double phantom_cells = 0.0;    // mean per scene (estimated from samples)
   double forbidden_share = 0.0;  // mean share of the grid forbidden per scene
   double fusion_ms_p99 = 0.0;
   double features_ms_p99 = 0.0;
-  std::vector<MissedCollision> missed_cases;  // the first few, for the report
 };
 
 // progress(scenes done, scenes). Throws std::invalid_argument for absurd options, or a cell

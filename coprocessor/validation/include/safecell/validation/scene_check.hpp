@@ -32,6 +32,10 @@ struct SceneCheck {
   std::vector<int> cameras_seeing;  // per human
 
   SceneCheck& operator+=(const SceneCheck& other);
+  // Forbidden but free, as a share of the free configurations checked.
+  [[nodiscard]] double false_positive_rate() const {
+    return free == 0 ? 0.0 : static_cast<double>(false_positives) / static_cast<double>(free);
+  }
 };
 
 // Joint values drawn uniformly within the grid's ranges.
