@@ -97,8 +97,9 @@ LutSet plane_luts(const CspaceGrid& grid, const std::vector<PlaneCamera>& camera
   set.rows = 1;
   set.static_cells = CellSet(grid.cell_count());
   for (std::size_t c = 0; c < cameras.size(); ++c) {
+    PixelTables pixels = build_pixel_to_cells_tables(tables[c], grid);
     set.cameras.push_back(CameraLuts{"plane" + std::to_string(c), CellToPixelsTable{},
-                                     build_pixel_to_cells_table(tables[c], grid)});
+                                     std::move(pixels.pixels), std::move(pixels.blocks), 0});
   }
   return set;
 }

@@ -64,7 +64,8 @@ TEST(BoxCoding, BoxesDecodeToExactlyTheCells) {
     const CellSet cells = random_cells(run.rng(), grid);
     std::vector<std::uint8_t> bytes;
     const std::size_t boxes = append_boxes(cells, BoxAxes::of(grid), bytes);
-    const PixelToCellsTable table(grid, 1, 1, {0, boxes}, bytes);
+    const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
+    EXPECT_EQ(table.total_boxes(), boxes);
     EXPECT_EQ(decoded(table), cells) << grid.cell_count() << " cells";
     CellSet added(grid.cell_count());
     table.add_cells(0, added);
@@ -86,7 +87,7 @@ TEST(BoxCoding, LongRunsAreCutAt255Cells) {
   std::vector<std::uint8_t> bytes;
   const std::size_t boxes = append_boxes(cells, BoxAxes::of(grid), bytes);
   EXPECT_EQ(boxes, 2U);  // 255 + 45 along joint 0, each 100 deep along joint 1
-  const PixelToCellsTable table(grid, 1, 1, {0, boxes}, bytes);
+  const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
   EXPECT_EQ(decoded(table), cells);
 }
 
@@ -97,19 +98,20 @@ TEST(BoxCoding, MalformedTablesAreRefused) {
   spec.joints[0] = JointSpec{0.0, 1.0, 1.0, true};
   spec.joints[1] = JointSpec{0.0, 1.0, 1.0, true};
   const CspaceGrid grid = CspaceGrid::create(spec).value();  // 10 x 10
-  const std::uint8_t inside[] = {0, 0, 0, 0, 10, 10};
-  EXPECT_NO_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {inside, inside + 6}));
-  const std::uint8_t too_long[] = {5, 0, 0, 0, 6, 1};
-  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {too_long, too_long + 6}),
-               std::invalid_argument);
-  const std::uint8_t empty_extent[] = {0, 0, 0, 0, 0, 1};
-  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {empty_extent, empty_extent + 6}),
-               std::invalid_argument);
-  const std::uint8_t outside[] = {100, 0, 0, 0, 1, 1};
-  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 1}, {outside, outside + 6}),
-               std::invalid_argument);
-  EXPECT_THROW(PixelToCellsTable(grid, 1, 1, {0, 2}, {inside, inside + 6}), std::invalid_argument);
-  EXPECT_THROW(PixelToCellsTable(grid, 2, 1, {0, 1}, {inside, inside + 6}), std::invalid_argument);
+  const auto table_of = [&grid](std::vector<std::uint8_t> bytes, std::uint64_t end) {
+    return PixelToCellsTable(grid, 1, 1, {0, end}, std::move(bytes));
+  };
+  // A box: the lowest cell as a LEB128 difference, then the extents along joints 1 and 2.
+  EXPECT_NO_THROW(table_of({0, 10, 10}, 3));
+  EXPECT_NO_THROW(table_of({0, 1, 1, 0x0B, 9, 9}, 6));             // the second box from cell 11
+  EXPECT_THROW(table_of({5, 6, 1}, 3), std::invalid_argument);     // runs past joint 1's end
+  EXPECT_THROW(table_of({0, 0, 1}, 3), std::invalid_argument);     // an empty extent
+  EXPECT_THROW(table_of({100, 1, 1}, 3), std::invalid_argument);   // starts outside the grid
+  EXPECT_THROW(table_of({0x80, 1, 1}, 3), std::invalid_argument);  // cell number cut off
+  EXPECT_THROW(table_of({0, 10}, 2), std::invalid_argument);       // extents cut off
+  EXPECT_THROW(table_of({0, 10, 10}, 2), std::invalid_argument);   // offsets do not span
+  EXPECT_THROW(PixelToCellsTable(grid, 2, 1, {0, 3}, std::vector<std::uint8_t>{0, 10, 10}),
+               std::invalid_argument);  // two pixels, one offset pair
 }
 
 }  // namespace

@@ -99,7 +99,8 @@ TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {
   for (const std::size_t budget : {std::size_t{256} << 20, std::size_t{1} << 16}) {
     PixelTableBuild build;
     build.memory_budget_bytes = budget;  // the small budget makes one band per feature row
-    const PixelToCellsTable pixels = build_pixel_to_cells_table(tables[0], *grid_, build);
+    const PixelTables pyramid = build_pixel_to_cells_tables(tables[0], *grid_, build);
+    const PixelToCellsTable& pixels = pyramid.pixels;
     std::vector<CellSet> oracle(pixels.pixel_count(), CellSet(grid_->cell_count()));
     for (CellIndex cell = 0; cell < grid_->cell_count(); ++cell) {
       const FeatureMask mask = tables[0].mask_of(cell);
@@ -115,6 +116,25 @@ TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {
       CellSet decoded(grid_->cell_count());
       pixels.add_cells(pixel, decoded);
       ASSERT_EQ(decoded, oracle[pixel]) << "pixel " << pixel << " budget " << budget;
+    }
+    // Every block of the pyramid holds exactly the union of its pixels' cells.
+    ASSERT_EQ(pyramid.blocks.size(), 3U);
+    for (std::size_t level = 1; level <= pyramid.blocks.size(); ++level) {
+      const PixelToCellsTable& blocks = pyramid.blocks[level - 1];
+      const int size = 1 << level;
+      for (int y = 0; y < blocks.rows(); ++y) {
+        for (int x = 0; x < blocks.columns(); ++x) {
+          CellSet expected(grid_->cell_count());
+          for (int py = y * size; py < std::min(pixels.rows(), (y + 1) * size); ++py) {
+            for (int px = x * size; px < std::min(pixels.columns(), (x + 1) * size); ++px) {
+              expected |= oracle[static_cast<std::size_t>(py * pixels.columns() + px)];
+            }
+          }
+          CellSet decoded(grid_->cell_count());
+          blocks.add_cells(static_cast<std::size_t>(y * blocks.columns() + x), decoded);
+          ASSERT_EQ(decoded, expected) << "level " << level << " block " << x << "," << y;
+        }
+      }
     }
   }
 }

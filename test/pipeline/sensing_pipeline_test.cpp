@@ -94,6 +94,32 @@ TEST_F(SensingPipelineTest, AMissingFrameMakesTheViewUnknown) {
   EXPECT_EQ(forbidden, luts_->static_cells) << "one unknown camera is below the threshold of 2";
 }
 
+TEST_F(SensingPipelineTest, AFrameSetsUnknownViewCountsAsSeeingEverything) {
+  SensingPipeline sensing = pipeline();
+  const std::vector<double> q{0.0, 0.0, 1.0, 0.0, 0.5, 0.0};
+  const auto images = sim_->render(SimScene{q, {}}, 5, 0.0);
+  FrameSet set;
+  for (std::size_t c = 0; c < images.size(); ++c) {
+    set.frames.push_back(CameraFrame{cell_->cameras[c].name(), images[c], 1, 0.0,
+                                     StampSource::kGrabClock, HealthReport{}});
+  }
+  EXPECT_EQ(sensing.process(set, q), luts_->static_cells);
+  // Two cameras fail (one black, one gone): at the threshold of two they forbid what both see.
+  set.frames[0].view = HealthReport{CameraFault::kBlack, "camera 'cam0': black image"};
+  set.frames[3].view = HealthReport{CameraFault::kUnavailable, "camera 'cam3': cannot open"};
+  set.frames[3].image = cv::Mat();
+  const CellSet& forbidden = sensing.process(set, q);
+  EXPECT_FALSE(sensing.observations()[0].known);
+  EXPECT_FALSE(sensing.observations()[3].known);
+  CellSet expected = sensing.fusion().observable(0);
+  expected &= sensing.fusion().observable(3);
+  expected |= luts_->static_cells;
+  EXPECT_EQ(forbidden, expected);
+  EXPECT_TRUE(forbidden.test(sensing.robot_cell())) << "the robot must stop: it cannot be seen";
+  set.frames[1].camera = "someone else";
+  EXPECT_THROW(sensing.process(set, q), std::invalid_argument);
+}
+
 TEST_F(SensingPipelineTest, BadInputIsRefused) {
   SensingPipeline sensing = pipeline();
   const std::vector<double> q{0.0, 0.0, 1.0, 0.0, 0.5, 0.0};

@@ -96,7 +96,7 @@ void report(benchmark::State& state, const FusionSetUp& fusion, const ForbiddenM
   state.counters["lut_build_s"] = fusion.build_s;
   double bytes = 0.0;
   for (const auto& camera : fusion.luts.cameras) {
-    bytes += static_cast<double>(camera.pixel_to_cells.bytes() + camera.cell_to_pixels.bytes());
+    bytes += static_cast<double>(camera.pixel_table_bytes() + camera.cell_to_pixels.bytes());
   }
   state.counters["lut_bytes_per_camera"] = bytes / static_cast<double>(fusion.luts.cameras.size());
 }

@@ -58,6 +58,8 @@ nlohmann::ordered_json summary_json(const fs::path& path, const LutFileSummary& 
     cameras.push_back({{"name", camera.name},
                        {"lut1_bytes", camera.cell_table_bytes},
                        {"lut2_bytes", camera.pixel_table_bytes},
+                       {"lut2_block_bytes", camera.block_table_bytes},
+                       {"lut2_block_levels", camera.block_levels},
                        {"lut2_boxes", camera.boxes},
                        {"covered_pairs", camera.covered_pairs},
                        {"uncompressed_bytes", camera_uncompressed},

@@ -75,6 +75,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     suspicious_.emplace_back(cells);
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
+    remaining_.emplace_back(luts.columns, luts.rows);
   }
   camera_sets_.reserve(luts.cameras.size());
   at_least_.assign(static_cast<std::size_t>(settings.camera_threshold), CellSet(cells));
@@ -117,18 +118,38 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
     }
     CellSet& suspicious = suspicious_[camera];
     suspicious.clear();
-    const FeatureMask& obstacles = obstacles_[camera];
-    const PixelToCellsTable& table = luts_.cameras[camera].pixel_to_cells;
-    std::size_t pixels = 0;
-    for (int row = 0; row < obstacles.rows(); ++row) {
-      const std::uint64_t* words = obstacles.row_words(row);
-      for (int word = 0; word < obstacles.words_per_row(); ++word) {
+    const CameraLuts& tables = luts_.cameras[camera];
+    FeatureMask& remaining = remaining_[camera];
+    remaining = obstacles_[camera];
+    const std::size_t pixels = remaining.count();
+    // Whole blocks first, the coarsest level first: a block's cells are the union of its pixels'.
+    for (std::size_t level = tables.pixel_blocks.size(); level >= 1; --level) {
+      const PixelToCellsTable& blocks = tables.pixel_blocks[level - 1];
+      const int size = 1 << level;
+      for (int y = 0; y < blocks.rows(); ++y) {
+        for (int x = 0; x < blocks.columns(); ++x) {
+          const FeatureRect block{static_cast<std::uint16_t>(x * size),
+                                  static_cast<std::uint16_t>(y * size),
+                                  static_cast<std::uint16_t>(x * size + size - 1),
+                                  static_cast<std::uint16_t>(y * size + size - 1)};
+          if (!remaining.all_in_rect(block)) continue;
+          blocks.add_cells(
+              static_cast<std::size_t>(y) * static_cast<std::size_t>(blocks.columns()) +
+                  static_cast<std::size_t>(x),
+              suspicious);
+          remaining.reset_rect(block);
+        }
+      }
+    }
+    const PixelToCellsTable& table = tables.pixel_to_cells;
+    for (int row = 0; row < remaining.rows(); ++row) {
+      const std::uint64_t* words = remaining.row_words(row);
+      for (int word = 0; word < remaining.words_per_row(); ++word) {
         for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
           const int column = word * 64 + std::countr_zero(bits);
           table.add_cells(static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
                               static_cast<std::size_t>(column),
                           suspicious);
-          ++pixels;
         }
       }
     }

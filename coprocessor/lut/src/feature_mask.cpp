@@ -42,25 +42,54 @@ FeatureMask FeatureMask::from_image(const cv::Mat& mask) {
   return result;
 }
 
-void FeatureMask::set_rect(const FeatureRect& rect) {
-  const int col1 = std::min<int>(rect.col1, columns_ - 1);
-  const int row1 = std::min<int>(rect.row1, rows_ - 1);
-  if (rect.col0 > col1 || rect.row0 > row1) return;
+namespace {
+
+// Calls apply(word, bits) for the bits of every word the rectangle (clipped to the mask) covers,
+// until it returns false; returns whether it never did.
+template <typename Mask, typename Apply>
+bool for_rect_words(Mask& mask, const FeatureRect& rect, Apply apply) {
+  const int col1 = std::min<int>(rect.col1, mask.columns() - 1);
+  const int row1 = std::min<int>(rect.row1, mask.rows() - 1);
+  if (rect.col0 > col1 || rect.row0 > row1) return true;
   const int first_word = rect.col0 >> 6;
   const int last_word = col1 >> 6;
-  if (words_per_row_ == 1) {  // the common grid of up to 64 columns: one word per row
-    const std::uint64_t bits = bit_span(rect.col0, col1);
-    for (int row = rect.row0; row <= row1; ++row) words_[static_cast<std::size_t>(row)] |= bits;
-    return;
+  if (first_word == last_word) {  // the common case: a grid of up to 64 columns
+    const std::uint64_t bits = bit_span(rect.col0 & 63, col1 & 63);
+    for (int row = rect.row0; row <= row1; ++row) {
+      if (!apply(mask.row_words(row)[first_word], bits)) return false;
+    }
+    return true;
   }
   for (int row = rect.row0; row <= row1; ++row) {
-    std::uint64_t* words = row_words(row);
     for (int word = first_word; word <= last_word; ++word) {
       const int first = word == first_word ? rect.col0 & 63 : 0;
       const int last = word == last_word ? col1 & 63 : 63;
-      words[word] |= bit_span(first, last);
+      if (!apply(mask.row_words(row)[word], bit_span(first, last))) return false;
     }
   }
+  return true;
+}
+
+}  // namespace
+
+void FeatureMask::set_rect(const FeatureRect& rect) {
+  for_rect_words(*this, rect, [](std::uint64_t& word, std::uint64_t bits) {
+    word |= bits;
+    return true;
+  });
+}
+
+void FeatureMask::reset_rect(const FeatureRect& rect) {
+  for_rect_words(*this, rect, [](std::uint64_t& word, std::uint64_t bits) {
+    word &= ~bits;
+    return true;
+  });
+}
+
+bool FeatureMask::all_in_rect(const FeatureRect& rect) const {
+  return for_rect_words(*this, rect, [](const std::uint64_t& word, std::uint64_t bits) {
+    return (word & bits) == bits;
+  });
 }
 
 void FeatureMask::clear() { std::fill(words_.begin(), words_.end(), 0); }

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <span>
@@ -20,7 +21,7 @@ static_assert(std::endian::native == std::endian::little,
               "LUT files are little-endian and mapped as they are");
 
 constexpr char kMagic[8] = {'S', 'C', 'L', 'U', 'T', '\r', '\n', '\x1a'};
-constexpr std::uint32_t kNoCamera = 0xFFFFFFFFU;
+constexpr std::uint16_t kNoCamera = 0xFFFFU;
 
 enum class SectionKind : std::uint32_t {
   kCameraName = 1,
@@ -30,7 +31,12 @@ enum class SectionKind : std::uint32_t {
   kCellRects = 5,
   kStaticCells = 6,
   kCameraStats = 7,
+  kBlockOffsets = 8,
+  kBlockBoxes = 9,
 };
+
+// The camera statistics section: covered pairs, boxes of the pixels, boxes of the blocks.
+constexpr std::size_t kCameraStatsWords = 3;
 
 struct Header {
   char magic[8];
@@ -53,7 +59,8 @@ static_assert(sizeof(Header) == 80);
 
 struct SectionEntry {
   std::uint32_t kind;
-  std::uint32_t camera;
+  std::uint16_t camera;
+  std::uint16_t level;  // the LUT-2 pyramid level of block sections, else 0
   std::uint64_t offset;
   std::uint64_t bytes;
 };
@@ -66,16 +73,18 @@ class FileImage {
  public:
   FileImage() { bytes_.resize(sizeof(Header)); }
 
-  void add(SectionKind kind, std::uint32_t camera, const void* data, std::size_t size) {
+  void add(SectionKind kind, std::uint16_t camera, const void* data, std::size_t size,
+           std::uint16_t level = 0) {
     bytes_.resize((bytes_.size() + 7) & ~std::size_t{7});
     sections_.push_back(
-        SectionEntry{static_cast<std::uint32_t>(kind), camera, bytes_.size(), size});
+        SectionEntry{static_cast<std::uint32_t>(kind), camera, level, bytes_.size(), size});
     const auto* first = static_cast<const char*>(data);
     bytes_.insert(bytes_.end(), first, first + size);
   }
   template <typename T>
-  void add(SectionKind kind, std::uint32_t camera, std::span<const T> values) {
-    add(kind, camera, values.data(), values.size_bytes());
+  void add(SectionKind kind, std::uint16_t camera, std::span<const T> values,
+           std::uint16_t level = 0) {
+    add(kind, camera, values.data(), values.size_bytes(), level);
   }
 
   std::string finish(Header header) {
@@ -182,13 +191,23 @@ std::span<const T> section_span(const std::filesystem::path& path, const Mapping
 
 void write_lut_file(const std::filesystem::path& path, const LutSet& set) {
   FileImage image;
+  if (set.cameras.size() >= kNoCamera) throw FileError(path, "too many cameras for a LUT file");
   for (std::size_t c = 0; c < set.cameras.size(); ++c) {
-    const auto camera = static_cast<std::uint32_t>(c);
+    const auto camera = static_cast<std::uint16_t>(c);
     const CameraLuts& luts = set.cameras[c];
+    std::uint64_t block_boxes = 0;
+    for (const auto& level : luts.pixel_blocks) block_boxes += level.total_boxes();
+    const std::uint64_t stats[kCameraStatsWords] = {luts.covered_pairs,
+                                                    luts.pixel_to_cells.total_boxes(), block_boxes};
     image.add(SectionKind::kCameraName, camera, luts.camera.data(), luts.camera.size());
-    image.add(SectionKind::kCameraStats, camera, &luts.covered_pairs, sizeof(luts.covered_pairs));
+    image.add(SectionKind::kCameraStats, camera, stats, sizeof(stats));
     image.add(SectionKind::kPixelOffsets, camera, luts.pixel_to_cells.offsets());
     image.add(SectionKind::kPixelBoxes, camera, luts.pixel_to_cells.box_bytes());
+    for (std::size_t l = 0; l < luts.pixel_blocks.size(); ++l) {
+      const auto level = static_cast<std::uint16_t>(l + 1);
+      image.add(SectionKind::kBlockOffsets, camera, luts.pixel_blocks[l].offsets(), level);
+      image.add(SectionKind::kBlockBoxes, camera, luts.pixel_blocks[l].box_bytes(), level);
+    }
     if (luts.cell_to_pixels.cell_count() > 0) {
       image.add(SectionKind::kCellOffsets, camera, luts.cell_to_pixels.offsets());
       image.add(SectionKind::kCellRects, camera, luts.cell_to_pixels.rects());
@@ -226,7 +245,7 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
   summary.cameras.resize(header.camera_count);
   const auto entries = section_span<SectionEntry>(
       path, mapping,
-      SectionEntry{0, kNoCamera, header.section_table_offset,
+      SectionEntry{0, kNoCamera, 0, header.section_table_offset,
                    std::uint64_t{header.section_count} * sizeof(SectionEntry)});
   for (const auto& entry : entries) {
     if (entry.camera == kNoCamera) continue;
@@ -242,18 +261,22 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
       }
       case SectionKind::kCameraStats: {
         const auto stats = section_span<std::uint64_t>(path, mapping, entry);
-        if (stats.size() != 1) throw LutFileError(path, "camera statistics of the wrong size");
+        if (stats.size() != kCameraStatsWords) {
+          throw LutFileError(path, "camera statistics of the wrong size");
+        }
         camera.covered_pairs = stats[0];
+        camera.boxes = stats[1];
         break;
       }
-      case SectionKind::kPixelOffsets: {
-        const auto offsets = section_span<std::uint64_t>(path, mapping, entry);
-        camera.boxes = offsets.empty() ? 0 : offsets.back();
-        camera.pixel_table_bytes += entry.bytes;
-        break;
-      }
+      case SectionKind::kPixelOffsets:
       case SectionKind::kPixelBoxes:
         camera.pixel_table_bytes += entry.bytes;
+        break;
+      case SectionKind::kBlockOffsets:
+      case SectionKind::kBlockBoxes:
+        camera.pixel_table_bytes += entry.bytes;
+        camera.block_table_bytes += entry.bytes;
+        camera.block_levels = std::max<int>(camera.block_levels, entry.level);
         break;
       case SectionKind::kCellOffsets:
       case SectionKind::kCellRects:
@@ -287,7 +310,7 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
   }
   const auto entries = section_span<SectionEntry>(
       path, *mapping,
-      SectionEntry{0, kNoCamera, header.section_table_offset,
+      SectionEntry{0, kNoCamera, 0, header.section_table_offset,
                    std::uint64_t{header.section_count} * sizeof(SectionEntry)});
   struct CameraSections {
     const SectionEntry* name = nullptr;
@@ -296,6 +319,8 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     const SectionEntry* cell_offsets = nullptr;
     const SectionEntry* cell_rects = nullptr;
     const SectionEntry* stats = nullptr;
+    std::vector<const SectionEntry*> block_offsets;  // [level - 1]
+    std::vector<const SectionEntry*> block_boxes;
   };
   std::vector<CameraSections> cameras(header.camera_count);
   const SectionEntry* static_cells = nullptr;
@@ -328,6 +353,18 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
       case SectionKind::kCameraStats:
         sections.stats = &entry;
         break;
+      case SectionKind::kBlockOffsets:
+      case SectionKind::kBlockBoxes: {
+        if (entry.level < 1 || entry.level > 16) {
+          throw LutFileError(path, "a block section of level " + std::to_string(entry.level));
+        }
+        auto& slots = static_cast<SectionKind>(entry.kind) == SectionKind::kBlockOffsets
+                          ? sections.block_offsets
+                          : sections.block_boxes;
+        if (slots.size() < entry.level) slots.resize(entry.level, nullptr);
+        slots[entry.level - 1U] = &entry;
+        break;
+      }
       default:
         throw LutFileError(path, "unknown section kind " + std::to_string(entry.kind));
     }
@@ -360,13 +397,29 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     CameraLuts luts;
     luts.camera.assign(name.begin(), name.end());
     const auto stats = section_span<std::uint64_t>(path, *mapping, *sections.stats);
-    if (stats.size() != 1) throw LutFileError(path, "camera statistics of the wrong size");
+    if (stats.size() != kCameraStatsWords) {
+      throw LutFileError(path, "camera statistics of the wrong size");
+    }
     luts.covered_pairs = stats[0];
+    if (sections.block_offsets.size() != sections.block_boxes.size()) {
+      throw LutFileError(path, "camera '" + luts.camera + "': block levels do not pair up");
+    }
     try {
       luts.pixel_to_cells = PixelToCellsTable(
           grid, set.columns, set.rows,
           section_span<std::uint64_t>(path, *mapping, *sections.pixel_offsets),
           section_span<std::uint8_t>(path, *mapping, *sections.pixel_boxes), mapping);
+      for (std::size_t l = 0; l < sections.block_offsets.size(); ++l) {
+        if (sections.block_offsets[l] == nullptr || sections.block_boxes[l] == nullptr) {
+          throw LutFileError(
+              path, "camera '" + luts.camera + "' lacks block level " + std::to_string(l + 1));
+        }
+        const int block = 1 << (l + 1);
+        luts.pixel_blocks.emplace_back(
+            grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
+            section_span<std::uint64_t>(path, *mapping, *sections.block_offsets[l]),
+            section_span<std::uint8_t>(path, *mapping, *sections.block_boxes[l]), mapping);
+      }
       if (sections.cell_offsets != nullptr && sections.cell_rects != nullptr) {
         luts.cell_to_pixels = CellToPixelsTable(
             set.columns, set.rows,

@@ -12,6 +12,12 @@ const char* to_string(LutSource source) {
   return "unknown";
 }
 
+std::size_t CameraLuts::pixel_table_bytes() const {
+  std::size_t bytes = pixel_to_cells.bytes();
+  for (const auto& level : pixel_blocks) bytes += level.bytes();
+  return bytes;
+}
+
 std::uint64_t uncompressed_bytes(std::uint64_t covered_pairs, std::uint32_t cell_count,
                                  std::size_t pixel_count) {
   return covered_pairs * (2 + 4) + std::uint64_t{cell_count} * 8 + std::uint64_t{pixel_count} * 8;

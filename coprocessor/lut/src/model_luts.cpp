@@ -108,12 +108,13 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
             1, (static_cast<double>(camera) + fraction) / static_cast<double>(cell.cameras.size()));
       }
     };
-    PixelToCellsTable pixel_table =
-        build_pixel_to_cells_table(cell_tables[camera], grid, pixel_build, inversion);
+    PixelTables pixel_tables =
+        build_pixel_to_cells_tables(cell_tables[camera], grid, pixel_build, inversion);
     const std::uint64_t pairs = cell_tables[camera].covered_pairs();
     cell_tables[camera] = CellToPixelsTable{};  // computed from the model when needed
     set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), CellToPixelsTable{},
-                                     std::move(pixel_table), pairs});
+                                     std::move(pixel_tables.pixels), std::move(pixel_tables.blocks),
+                                     pairs});
   }
   set.static_cells =
       static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads, stage(2));

@@ -25,6 +25,7 @@ std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
                          std::vector<std::uint8_t>& box_bytes) {
   CellSet remaining = cells;
   std::size_t boxes = 0;
+  CellIndex previous_start = 0;
   for (CellIndex start = remaining.next_set(0); start < remaining.cell_count();
        start = remaining.next_set(start)) {
     std::uint32_t coord[kMaxJoints]{};
@@ -50,46 +51,77 @@ std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
     for_each_box_row(axes, start, extents, [&](CellIndex first, std::uint32_t run) {
       remaining.reset_range(first, first + run);
     });
-    for (int shift = 0; shift < 32; shift += 8) {
-      box_bytes.push_back(static_cast<std::uint8_t>(start >> shift));
-    }
-    for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
-      box_bytes.push_back(static_cast<std::uint8_t>(extents[axis]));
-    }
+    PixelToCellsTable::append_box(box_bytes, previous_start, start, extents, axes.count);
+    previous_start = start;
     ++boxes;
   }
   return boxes;
 }
 
-PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table,
-                                             const CspaceGrid& grid, const PixelTableBuild& build,
-                                             const ProgressCallback& progress) {
+namespace {
+
+// One level of the pyramid as it is built: boxes of its blocks in row-major block order.
+struct LevelBuild {
+  int block = 1;  // pixels per block side
+  int columns = 0;
+  int rows = 0;
+  std::vector<std::uint64_t> offsets{0};
+  std::vector<std::uint8_t> box_bytes;
+};
+
+// Cuts the sets of one band's blocks into boxes (in parallel) and appends them to the level.
+void append_band(std::vector<CellSet>& sets, const BoxAxes& axes, unsigned threads,
+                 LevelBuild& level) {
+  std::vector<std::vector<std::uint8_t>> boxes(sets.size());
+  parallel_chunks(sets.size(), 16, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) append_boxes(sets[i], axes, boxes[i]);
+  });
+  for (const auto& block_boxes : boxes) {
+    level.offsets.push_back(level.offsets.back() + block_boxes.size());
+    level.box_bytes.insert(level.box_bytes.end(), block_boxes.begin(), block_boxes.end());
+  }
+}
+
+}  // namespace
+
+PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, const CspaceGrid& grid,
+                                        const PixelTableBuild& build,
+                                        const ProgressCallback& progress) {
   if (cell_table.cell_count() != grid.cell_count()) {
     throw std::invalid_argument("LUT-1 has " + std::to_string(cell_table.cell_count()) +
                                 " cells, the grid " + std::to_string(grid.cell_count()));
   }
+  if (build.block_levels < 0 || build.block_levels > kMaxBlockLevels) {
+    throw std::invalid_argument("LUT-2 block levels must be 0.." + std::to_string(kMaxBlockLevels) +
+                                ", got " + std::to_string(build.block_levels));
+  }
   const BoxAxes axes = BoxAxes::of(grid);
   const int columns = cell_table.columns();
   const int rows = cell_table.rows();
+  const int top_block = 1 << build.block_levels;
+  // Bands of whole top-level blocks, as many rows as the memory budget allows.
   const std::size_t bytes_per_row = static_cast<std::size_t>(columns) *
                                     ((static_cast<std::size_t>(grid.cell_count()) + 63) / 64) * 8;
-  const int band_rows = static_cast<int>(
-      std::clamp<std::size_t>(build.memory_budget_bytes / std::max<std::size_t>(bytes_per_row, 1),
-                              1, static_cast<std::size_t>(rows)));
+  const auto affordable = static_cast<int>(std::min<std::size_t>(
+      build.memory_budget_bytes / std::max<std::size_t>(bytes_per_row, 1), 1U << 20));
+  const int band_rows = std::max(top_block, affordable / top_block * top_block);
 
-  std::vector<std::uint64_t> offsets{0};
-  std::vector<std::uint8_t> box_bytes;
+  std::vector<LevelBuild> levels(static_cast<std::size_t>(build.block_levels) + 1);
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    levels[l].block = 1 << l;
+    levels[l].columns = (columns + levels[l].block - 1) / levels[l].block;
+    levels[l].rows = (rows + levels[l].block - 1) / levels[l].block;
+  }
   for (int band = 0; band < rows; band += band_rows) {
     const int band_end = std::min(rows, band + band_rows);
-    const auto band_pixels =
-        static_cast<std::size_t>(band_end - band) * static_cast<std::size_t>(columns);
-    std::vector<CellSet> pixel_cells(band_pixels, CellSet(grid.cell_count()));
+    std::vector<CellSet> sets(
+        static_cast<std::size_t>(band_end - band) * static_cast<std::size_t>(columns),
+        CellSet(grid.cell_count()));
     // Gather: one feature row per chunk, so that no two threads write the same bitset.
     parallel_chunks(static_cast<std::size_t>(band_end - band), 1, build.threads,
                     [&](std::size_t, std::size_t begin, std::size_t) {
                       const int row = band + static_cast<int>(begin);
-                      CellSet* row_cells =
-                          pixel_cells.data() + begin * static_cast<std::size_t>(columns);
+                      CellSet* row_cells = sets.data() + begin * static_cast<std::size_t>(columns);
                       for (CellIndex cell = 0; cell < grid.cell_count(); ++cell) {
                         for (const auto& rect : cell_table.rects_of(cell)) {
                           if (rect.row0 > row || rect.row1 < row) continue;
@@ -99,23 +131,40 @@ PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table
                         }
                       }
                     });
-    // Cut every pixel's cells into boxes, in parallel, then append in pixel order.
-    std::vector<std::vector<std::uint8_t>> pixel_boxes(band_pixels);
-    std::vector<std::size_t> pixel_box_counts(band_pixels);
-    parallel_chunks(
-        band_pixels, 16, build.threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-          for (std::size_t pixel = begin; pixel < end; ++pixel) {
-            pixel_box_counts[pixel] = append_boxes(pixel_cells[pixel], axes, pixel_boxes[pixel]);
-            pixel_cells[pixel] = CellSet{};
-          }
-        });
-    for (std::size_t pixel = 0; pixel < band_pixels; ++pixel) {
-      offsets.push_back(offsets.back() + pixel_box_counts[pixel]);
-      box_bytes.insert(box_bytes.end(), pixel_boxes[pixel].begin(), pixel_boxes[pixel].end());
+    append_band(sets, axes, build.threads, levels[0]);
+    // Each coarser level: the union of the (up to) four blocks below it.
+    int set_columns = columns;
+    int set_rows = band_end - band;
+    for (std::size_t l = 1; l < levels.size(); ++l) {
+      const int coarse_columns = (set_columns + 1) / 2;
+      const int coarse_rows = (set_rows + 1) / 2;
+      std::vector<CellSet> coarse(
+          static_cast<std::size_t>(coarse_columns) * static_cast<std::size_t>(coarse_rows),
+          CellSet(grid.cell_count()));
+      for (int y = 0; y < set_rows; ++y) {
+        for (int x = 0; x < set_columns; ++x) {
+          coarse[static_cast<std::size_t>(y / 2 * coarse_columns + x / 2)] |=
+              sets[static_cast<std::size_t>(y * set_columns + x)];
+        }
+      }
+      sets = std::move(coarse);
+      set_columns = coarse_columns;
+      set_rows = coarse_rows;
+      append_band(sets, axes, build.threads, levels[l]);
     }
     if (progress) progress(static_cast<double>(band_end) / rows);
   }
-  return PixelToCellsTable(grid, columns, rows, std::move(offsets), std::move(box_bytes));
+  PixelTables tables;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    PixelToCellsTable table(grid, levels[l].columns, levels[l].rows, std::move(levels[l].offsets),
+                            std::move(levels[l].box_bytes));
+    if (l == 0) {
+      tables.pixels = std::move(table);
+    } else {
+      tables.blocks.push_back(std::move(table));
+    }
+  }
+  return tables;
 }
 
 }  // namespace safecell

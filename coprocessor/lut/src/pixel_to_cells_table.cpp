@@ -38,48 +38,78 @@ PixelToCellsTable::PixelToCellsTable(const CspaceGrid& grid, int columns, int ro
   check();
 }
 
-void PixelToCellsTable::check() const {
-  if (columns_ < 1 || rows_ < 1) throw std::invalid_argument("LUT-2: empty feature grid");
+void PixelToCellsTable::append_box(std::vector<std::uint8_t>& bytes, CellIndex previous_start,
+                                   CellIndex start, const std::uint32_t* extents,
+                                   std::uint32_t axes) {
+  CellIndex delta = start - previous_start;
+  while (delta >= 0x80U) {
+    bytes.push_back(static_cast<std::uint8_t>((delta & 0x7FU) | 0x80U));
+    delta >>= 7;
+  }
+  bytes.push_back(static_cast<std::uint8_t>(delta));
+  for (std::uint32_t axis = 0; axis < axes; ++axis) {
+    bytes.push_back(static_cast<std::uint8_t>(extents[axis]));
+  }
+}
+
+void PixelToCellsTable::check() {
+  if (columns_ < 1 || rows_ < 1) throw std::invalid_argument("LUT-2: empty pixel grid");
   const std::size_t pixels = static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_);
-  if (offsets_.size() != pixels + 1 || offsets_.front() != 0) {
+  if (offsets_.size() != pixels + 1 || offsets_.front() != 0 ||
+      offsets_.back() != box_bytes_.size()) {
     throw std::invalid_argument("LUT-2: " + std::to_string(offsets_.size()) + " offsets for " +
-                                std::to_string(pixels) + " pixels");
+                                std::to_string(pixels) + " pixels do not span the " +
+                                std::to_string(box_bytes_.size()) + " box bytes");
   }
-  const std::uint32_t bytes_per_box = axes_.bytes_per_box();
-  if (offsets_.back() * bytes_per_box != box_bytes_.size()) {
-    throw std::invalid_argument("LUT-2: the offsets do not span the boxes");
-  }
-  for (std::size_t i = 1; i < offsets_.size(); ++i) {
-    if (offsets_[i] < offsets_[i - 1]) {
-      throw std::invalid_argument("LUT-2: offsets fall at pixel " + std::to_string(i - 1));
+  // Every box is decoded once: it must end inside its pixel's bytes and stay inside the grid
+  // along each axis, so that decoding in fusion can never leave the cell set.
+  total_boxes_ = 0;
+  for (std::size_t pixel = 0; pixel < pixels; ++pixel) {
+    if (offsets_[pixel + 1] < offsets_[pixel]) {
+      throw std::invalid_argument("LUT-2: offsets fall at pixel " + std::to_string(pixel));
     }
-  }
-  // Every box must stay inside the grid along each axis, so that decoding cannot leave the set.
-  for (std::size_t box = 0; box < offsets_.back(); ++box) {
-    const std::uint8_t* bytes = box_bytes_.data() + box * bytes_per_box;
-    const CellIndex start = box_start(bytes);
-    if (start >= cell_count_) throw std::invalid_argument("LUT-2: a box starts outside the grid");
-    for (std::uint32_t axis = axes_.count; axis-- > 0;) {
-      const std::uint32_t coord = start / axes_.stride[axis] % axes_.cells[axis];
-      const std::uint32_t extent = bytes[4 + axis];
-      if (extent == 0 || coord + extent > axes_.cells[axis]) {
-        throw std::invalid_argument("LUT-2: box " + std::to_string(box) +
-                                    " leaves the grid along joint " +
-                                    std::to_string(axes_.joint[axis] + 1));
+    std::uint64_t at = offsets_[pixel];
+    const std::uint64_t end = offsets_[pixel + 1];
+    std::uint64_t start = 0;
+    while (at < end) {
+      std::uint64_t delta = 0;
+      int shift = 0;
+      while (true) {
+        if (at >= end || shift > 28) {
+          throw std::invalid_argument("LUT-2: a box of pixel " + std::to_string(pixel) +
+                                      " is cut off or its cell number is too long");
+        }
+        const std::uint8_t byte = box_bytes_[at++];
+        delta |= std::uint64_t{byte & 0x7FU} << shift;
+        shift += 7;
+        if ((byte & 0x80U) == 0) break;
       }
+      start += delta;
+      if (start >= cell_count_ || end - at < axes_.count) {
+        throw std::invalid_argument("LUT-2: a box of pixel " + std::to_string(pixel) +
+                                    " starts outside the grid or is cut off");
+      }
+      for (std::uint32_t axis = 0; axis < axes_.count; ++axis) {
+        const std::uint64_t coord = start / axes_.stride[axis] % axes_.cells[axis];
+        const std::uint32_t extent = box_bytes_[at + axis];
+        if (extent == 0 || coord + extent > axes_.cells[axis]) {
+          throw std::invalid_argument("LUT-2: a box of pixel " + std::to_string(pixel) +
+                                      " leaves the grid along joint " +
+                                      std::to_string(axes_.joint[axis] + 1));
+        }
+      }
+      at += axes_.count;
+      ++total_boxes_;
     }
   }
 }
 
 void PixelToCellsTable::add_cells(std::size_t pixel, CellSet& cells) const {
-  const std::uint32_t bytes_per_box = axes_.bytes_per_box();
-  const std::uint8_t* box = box_bytes_.data() + offsets_[pixel] * bytes_per_box;
-  const std::uint8_t* end = box_bytes_.data() + offsets_[pixel + 1] * bytes_per_box;
-  for (; box != end; box += bytes_per_box) {
-    for_each_box_row(axes_, box_start(box), box + 4, [&cells](CellIndex first, std::uint32_t run) {
+  for_each_box(pixel, [&](CellIndex start, const std::uint8_t* extents) {
+    for_each_box_row(axes_, start, extents, [&cells](CellIndex first, std::uint32_t run) {
       cells.set_range(first, first + run);
     });
-  }
+  });
 }
 
 }  // namespace safecell

@@ -41,6 +41,23 @@ SensingPipeline::SensingPipeline(const CellModel& cell, const CspaceGrid& grid, 
   observations_.assign(cameras, CameraObservation{false, FeatureMask(cell.feature_grid)});
 }
 
+const CellSet& SensingPipeline::process(const FrameSet& frames, const std::vector<double>& q) {
+  if (frames.frames.size() != cell_.cameras.size()) {
+    throw std::invalid_argument("a frame set of " + std::to_string(frames.frames.size()) +
+                                " cameras for a cell of " + std::to_string(cell_.cameras.size()));
+  }
+  images_.resize(frames.frames.size());
+  for (std::size_t c = 0; c < frames.frames.size(); ++c) {
+    const CameraFrame& frame = frames.frames[c];
+    if (frame.camera != cell_.cameras[c].name()) {
+      throw std::invalid_argument("frame set camera " + std::to_string(c) + " is '" + frame.camera +
+                                  "', the cell's is '" + cell_.cameras[c].name() + "'");
+    }
+    images_[c] = frame.known() ? frame.image : cv::Mat();
+  }
+  return process(images_, q);
+}
+
 const CellSet& SensingPipeline::process(const std::vector<cv::Mat>& frames,
                                         const std::vector<double>& q) {
   if (frames.size() != extractors_.size()) {

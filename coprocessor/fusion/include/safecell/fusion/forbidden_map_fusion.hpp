@@ -4,6 +4,9 @@
 // suspicious cells (the union of the boxes of its blocked pixels); a cell is critical when at
 // least `camera_threshold` cameras suspect it; forbidden = critical + static obstacles.
 //
+// Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
+// all obstacles adds its precomputed union at once (pixel_table_builder.hpp).
+//
 // Counting is per camera, not per pixel: many pixels of one camera marking a cell still count
 // once. An unknown view counts as suspecting every cell the camera can see at all.
 //
@@ -77,6 +80,7 @@ class ForbiddenMapFusion {
   std::vector<CellSet> at_least_;  // at_least_[k]: cells suspected by at least k + 1 cameras
   std::vector<FeatureMask> robot_;
   std::vector<FeatureMask> obstacles_;
+  std::vector<FeatureMask> remaining_;  // obstacle pixels not yet covered by a whole block
   CellSet critical_;
   CellSet forbidden_;
   FusionCounts counts_;

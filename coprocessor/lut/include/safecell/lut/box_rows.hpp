@@ -17,9 +17,6 @@ struct BoxAxes {
 
   // Joint 0 and every other joint with more than one cell.
   static BoxAxes of(const CspaceGrid& grid);
-  // Bytes of a box in LUT-2: its lowest cell (4 bytes, little-endian), then one extent byte per
-  // axis (1..255; a longer run is cut into several boxes).
-  [[nodiscard]] std::uint32_t bytes_per_box() const { return 4 + count; }
 };
 
 // Calls row(first cell, run length) for every row of the box, in ascending cell order.

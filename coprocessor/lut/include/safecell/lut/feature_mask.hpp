@@ -46,6 +46,10 @@ class FeatureMask {
   }
   // Sets the rectangle clipped to the mask (precondition: col0 <= col1, row0 <= row1).
   void set_rect(const FeatureRect& rect);
+  // Clears the rectangle clipped to the mask.
+  void reset_rect(const FeatureRect& rect);
+  // Whether every cell of the rectangle clipped to the mask is set.
+  [[nodiscard]] bool all_in_rect(const FeatureRect& rect) const;
   void clear();
 
   [[nodiscard]] std::size_t count() const;

@@ -6,9 +6,11 @@
 //     and grid fingerprint, source (model/recorded), feature grid columns and rows, camera count,
 //     cell count, section count, section table offset, file size, CRC-32 of the whole file
 //     computed with this field zero.
-//   section table: per section its kind, camera (or 0xFFFFFFFF), offset and size in bytes.
-//   sections: per camera its name, LUT-2 offsets and boxes, and (recorded sets) LUT-1 offsets
-//     and rectangles; once, the static-obstacle cells as 64-bit words.
+//   section table: per section its kind, camera (or 0xFFFF), pyramid level, offset and size in
+//     bytes.
+//   sections: per camera its name, statistics, LUT-2 offsets and boxes for the pixels and for each
+//     block level, and (recorded sets) LUT-1 offsets and rectangles; once, the static-obstacle
+//     cells as 64-bit words.
 // A file of another version, another fingerprint or grid, a bad checksum, or sections that do not
 // fit is refused with LutFileError naming the file and what was wrong; nothing is guessed.
 
@@ -24,7 +26,7 @@
 
 namespace safecell {
 
-inline constexpr std::uint32_t kLutFileVersion = 1;
+inline constexpr std::uint32_t kLutFileVersion = 2;
 
 class LutFileError : public std::runtime_error {
  public:
@@ -47,8 +49,10 @@ struct LutFileSummary {
   struct Camera {
     std::string name;
     std::uint64_t cell_table_bytes = 0;   // LUT-1 (0 in a model-mode set)
-    std::uint64_t pixel_table_bytes = 0;  // LUT-2
-    std::uint64_t boxes = 0;
+    std::uint64_t pixel_table_bytes = 0;  // LUT-2 with its block levels
+    std::uint64_t block_table_bytes = 0;  // of which the block levels
+    int block_levels = 0;
+    std::uint64_t boxes = 0;  // of the pixels' LUT-2
     std::uint64_t covered_pairs = 0;
   };
   std::vector<Camera> cameras;

@@ -22,8 +22,14 @@ struct CameraLuts {
   // LUT-1; empty in a model-mode set (ModelSilhouettes computes it from the model).
   CellToPixelsTable cell_to_pixels;
   PixelToCellsTable pixel_to_cells;  // LUT-2
+  // LUT-2 of blocks of pixels: pixel_blocks[l - 1] for blocks of 2^l x 2^l
+  // (pixel_table_builder.hpp).
+  std::vector<PixelToCellsTable> pixel_blocks;
   // (cell, feature cell) pairs the tables hold: what the paper's uncompressed layout stores.
   std::uint64_t covered_pairs = 0;
+
+  // Bytes of LUT-2 with its block levels.
+  [[nodiscard]] std::size_t pixel_table_bytes() const;
 };
 
 // Bytes of the paper's uncompressed layout for one camera: LUT-1 with a 2-byte pixel number per

@@ -4,7 +4,11 @@
 // per pixel (the band is sized to a memory budget, so a finer grid streams instead of holding
 // everything), then each pixel's bitset is cut into boxes greedily: a box grows from its lowest
 // cell along joint 0, then along each further axis while the whole new layer is in the set.
-// Boxes may overlap (their union is the set exactly), which keeps them few.
+// Boxes do not overlap.
+//
+// The pyramid: besides every pixel's cells, every block of 2 x 2, 4 x 4, ... pixels (aligned to
+// multiples of its size) gets the union of its pixels' cells. Fusion adds a whole block where all
+// its pixels are obstacles: one block's boxes instead of many pixels' mostly repeated ones.
 
 #include <cstddef>
 
@@ -15,16 +19,25 @@
 
 namespace safecell {
 
+inline constexpr int kMaxBlockLevels = 6;
+
 struct PixelTableBuild {
   unsigned threads = 0;                          // 0: one per hardware thread
   std::size_t memory_budget_bytes = 256u << 20;  // for the per-pixel bitsets of one band
+  int block_levels = 3;                          // blocks of 2, 4 and 8 pixels a side
 };
 
-// Throws std::invalid_argument when the table is not of the grid.
-[[nodiscard]] PixelToCellsTable build_pixel_to_cells_table(const CellToPixelsTable& cell_table,
-                                                           const CspaceGrid& grid,
-                                                           const PixelTableBuild& build = {},
-                                                           const ProgressCallback& progress = {});
+struct PixelTables {
+  PixelToCellsTable pixels;               // LUT-2 proper
+  std::vector<PixelToCellsTable> blocks;  // blocks[l - 1]: blocks of 2^l x 2^l pixels
+};
+
+// Throws std::invalid_argument when the table is not of the grid, or for block levels outside
+// 0..kMaxBlockLevels.
+[[nodiscard]] PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table,
+                                                      const CspaceGrid& grid,
+                                                      const PixelTableBuild& build = {},
+                                                      const ProgressCallback& progress = {});
 
 // The boxes of one set of cells, appended to `box_bytes` (the coding of PixelToCellsTable).
 // Returns the number of boxes. Exposed for tests.

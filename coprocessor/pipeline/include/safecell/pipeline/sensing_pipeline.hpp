@@ -7,6 +7,7 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "safecell/acquisition/frame_set.hpp"
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/features/feature_extractor.hpp"
@@ -31,6 +32,10 @@ class SensingPipeline {
   // q: the robot's joint values (rad) when the frames were exposed; outside the grid it is
   // refused (std::out_of_range): the caller must stop the robot then.
   const CellSet& process(const std::vector<cv::Mat>& frames, const std::vector<double>& q);
+  // The same for a frame set from the cameras (acquisition): a camera whose view is unknown (it
+  // delivered nothing usable, or its health monitor raised a fault) counts as seeing everything
+  // it can see. Throws std::invalid_argument when the cameras are not the cell's, in its order.
+  const CellSet& process(const FrameSet& frames, const std::vector<double>& q);
 
   [[nodiscard]] const ForbiddenMapFusion& fusion() const { return fusion_; }
   [[nodiscard]] const std::vector<CameraObservation>& observations() const { return observations_; }
@@ -44,6 +49,7 @@ class SensingPipeline {
   std::vector<FeatureImages> references_;
   std::vector<FeatureImages> current_;
   std::vector<CameraObservation> observations_;
+  std::vector<cv::Mat> images_;  // a frame set's images, unknown views empty
   ForbiddenMapFusion fusion_;
   CycleTimes times_;
   CellIndex robot_cell_ = 0;
