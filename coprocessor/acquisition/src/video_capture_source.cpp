@@ -8,6 +8,12 @@
 namespace safecell {
 namespace {
 
+#if defined(__linux__)
+constexpr int kDeviceApi = cv::CAP_V4L2;
+#else
+constexpr int kDeviceApi = cv::CAP_ANY;
+#endif
+
 bool all_digits(const std::string& text) {
   return !text.empty() &&
          std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
@@ -45,7 +51,9 @@ void VideoCaptureSource::open() {
     return;
   }
   try {
-    const bool opened = kind_ == Kind::kDevice     ? capture_->open(std::stoi(spec_))
+    // A device index is a V4L2 device on Linux: asking that backend alone keeps OpenCV from
+    // probing every other camera library (slow, and some of them leak).
+    const bool opened = kind_ == Kind::kDevice     ? capture_->open(std::stoi(spec_), kDeviceApi)
                         : kind_ == Kind::kPipeline ? capture_->open(spec_, cv::CAP_GSTREAMER)
                                                    : capture_->open(spec_);
     if (!opened) open_problem_ = "cannot open " + what_;

@@ -16,9 +16,13 @@ void project(const BallProjection& projection, const std::vector<Ball>& balls, F
   }
 }
 
-const RobotModel& robot_of(const CellModel& cell, const ModelLutOptions& options) {
+// The envelope of the cell's robot, after the checks (so that no argument touches a missing
+// robot before they ran).
+CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
+                              const ModelLutOptions& options) {
   check_model_lut_options(cell, options);
-  return *cell.robot;
+  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
+                      options.padding_m);
 }
 
 }  // namespace
@@ -45,8 +49,7 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
                                    const ModelLutOptions& options)
     : grid_(grid),
       feature_grid_(cell.feature_grid),
-      envelope_(robot_of(cell, options), cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                options.padding_m) {
+      envelope_(checked_envelope(cell, grid, options)) {
   projections_.reserve(cell.cameras.size());
   for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
   cached_bodies_ = envelope_.first_uncached_body(kMaxCachedPrefixes);
