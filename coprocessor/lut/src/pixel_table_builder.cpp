@@ -141,10 +141,11 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
       std::vector<CellSet> coarse(
           static_cast<std::size_t>(coarse_columns) * static_cast<std::size_t>(coarse_rows),
           CellSet(grid.cell_count()));
-      for (int y = 0; y < set_rows; ++y) {
-        for (int x = 0; x < set_columns; ++x) {
-          coarse[static_cast<std::size_t>(y / 2 * coarse_columns + x / 2)] |=
-              sets[static_cast<std::size_t>(y * set_columns + x)];
+      const auto fine_width = static_cast<std::size_t>(set_columns);
+      const auto coarse_width = static_cast<std::size_t>(coarse_columns);
+      for (std::size_t y = 0; y < static_cast<std::size_t>(set_rows); ++y) {
+        for (std::size_t x = 0; x < fine_width; ++x) {
+          coarse[y / 2 * coarse_width + x / 2] |= sets[y * fine_width + x];
         }
       }
       sets = std::move(coarse);
