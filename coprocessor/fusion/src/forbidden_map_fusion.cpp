@@ -73,6 +73,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     }
     observable_.push_back(observable_cells(camera.pixel_to_cells));
     suspicious_.emplace_back(cells);
+    suspicious_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
     remaining_.emplace_back(luts.columns, luts.rows);
@@ -116,7 +117,7 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
       camera_sets_.push_back(&observable_[camera]);
       continue;
     }
-    CellSet& suspicious = suspicious_[camera];
+    CellLines& suspicious = suspicious_lines_[camera];
     suspicious.clear();
     const CameraLuts& tables = luts_.cameras[camera];
     FeatureMask& remaining = remaining_[camera];
@@ -153,8 +154,9 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
         }
       }
     }
+    suspicious.pack_into(suspicious_[camera]);
     counts_.obstacle_pixels[camera] = pixels;
-    camera_sets_.push_back(&suspicious);
+    camera_sets_.push_back(&suspicious_[camera]);
   }
   count_at_least(camera_sets_, settings_.camera_threshold, at_least_, critical_);
   forbidden_.words() = critical_.words();

@@ -112,4 +112,9 @@ void PixelToCellsTable::add_cells(std::size_t pixel, CellSet& cells) const {
   });
 }
 
+void PixelToCellsTable::add_cells(std::size_t pixel, CellLines& cells) const {
+  for_each_box(pixel,
+               [&cells](CellIndex start, const std::uint8_t* extents) { cells.add_box(start, extents); });
+}
+
 }  // namespace safecell

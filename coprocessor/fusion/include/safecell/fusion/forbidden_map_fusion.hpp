@@ -5,7 +5,8 @@
 // least `camera_threshold` cameras suspect it; forbidden = critical + static obstacles.
 //
 // Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
-// all obstacles adds its precomputed union at once (pixel_table_builder.hpp).
+// all obstacles adds its precomputed union at once (pixel_table_builder.hpp). Boxes are filled in
+// the line layout (cell_lines.hpp) and each camera's set is packed once at the end.
 //
 // Counting is per camera, not per pixel: many pixels of one camera marking a cell still count
 // once. An unknown view counts as suspecting every cell the camera can see at all.
@@ -75,6 +76,7 @@ class ForbiddenMapFusion {
   const RobotSilhouettes& silhouettes_;
   FusionSettings settings_;
   std::vector<CellSet> observable_;
+  std::vector<CellLines> suspicious_lines_;  // filled box by box, then packed into suspicious_
   std::vector<CellSet> suspicious_;
   std::vector<const CellSet*> camera_sets_;  // this cycle's set per camera
   std::vector<CellSet> at_least_;  // at_least_[k]: cells suspected by at least k + 1 cameras

@@ -19,6 +19,7 @@
 
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/lut/box_rows.hpp"
+#include "safecell/lut/cell_lines.hpp"
 #include "safecell/lut/cell_set.hpp"
 
 namespace safecell {
@@ -45,6 +46,8 @@ class PixelToCellsTable {
   // ORs the cells of one pixel into `cells` (precondition: pixel < pixel_count(), cells of the
   // table's grid). The hot loop of fusion.
   void add_cells(std::size_t pixel, CellSet& cells) const;
+  // The same into the line layout (cell_lines.hpp), which fills boxes faster.
+  void add_cells(std::size_t pixel, CellLines& cells) const;
   // Calls visit(lowest cell, extents) for every box of the pixel.
   template <typename Visit>
   void for_each_box(std::size_t pixel, Visit visit) const;

@@ -1,0 +1,46 @@
+#pragma once
+// A set of C-space cells laid out for fast box filling: every line of cells along joint 0 (all
+// joint-0 cells at fixed other joints) starts on a word of its own. A box of cells
+// (box_rows.hpp) then sets the same bit mask in each of its lines, and its lines along box axis 1
+// are neighbouring words, so fusion fills a box with a few vector operations per run of lines
+// instead of a shifted range per row. CellSet (the compact layout every other part uses) is
+// obtained with pack_into().
+
+#include <cstdint>
+#include <vector>
+
+#include "safecell/lut/box_rows.hpp"
+#include "safecell/lut/cell_set.hpp"
+
+namespace safecell {
+
+class CellLines {
+ public:
+  CellLines() = default;
+  CellLines(const BoxAxes& axes, std::uint32_t cell_count);
+
+  void clear();
+  // ORs the box with lowest cell `start` and one extent per box axis (precondition: the box lies
+  // in the grid, as PixelToCellsTable checks when it is made).
+  void add_box(CellIndex start, const std::uint8_t* extents);
+  // Writes the set into `cells` (of the same grid) in the compact layout.
+  void pack_into(CellSet& cells) const;
+
+  [[nodiscard]] std::uint32_t words_per_line() const { return words_per_line_; }
+  [[nodiscard]] std::size_t line_count() const { return line_count_; }
+
+ private:
+  void add_box_one_word_lines(CellIndex start, const std::uint8_t* extents);
+  void add_box_long_lines(CellIndex start, const std::uint8_t* extents);
+
+  BoxAxes axes_;
+  std::uint32_t cell_count_ = 0;
+  std::uint32_t line_cells_ = 1;      // cells along joint 0
+  std::uint32_t words_per_line_ = 1;  // ceil(line_cells_ / 64)
+  std::size_t line_count_ = 0;
+  // Lines between neighbours along each box axis (axis 0 unused).
+  std::size_t line_stride_[kMaxJoints]{};
+  std::vector<std::uint64_t> words_;
+};
+
+}  // namespace safecell

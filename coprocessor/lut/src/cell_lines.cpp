@@ -1,0 +1,130 @@
+#include "safecell/lut/cell_lines.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace safecell {
+namespace {
+
+constexpr std::uint64_t kAll = ~std::uint64_t{0};
+
+// Bits first..first+count-1 of a word (count 1..64, first + count <= 64).
+std::uint64_t bit_run(std::uint32_t first, std::uint32_t count) {
+  return (count == 64 ? kAll : (std::uint64_t{1} << count) - 1) << first;
+}
+
+// Calls line(index of the box's first line along axis 1) for each run of lines along axis 1,
+// stepping an odometer over the box axes from 2 on.
+template <typename Line>
+void for_each_line_run(std::uint32_t axis_count, const std::size_t* line_stride,
+                       std::size_t first_line, const std::uint8_t* extents, Line line) {
+  std::uint32_t at[kMaxJoints]{};
+  while (true) {
+    line(first_line);
+    std::uint32_t axis = 2;
+    for (; axis < axis_count; ++axis) {
+      if (++at[axis] < extents[axis]) {
+        first_line += line_stride[axis];
+        break;
+      }
+      first_line -= (at[axis] - 1) * line_stride[axis];
+      at[axis] = 0;
+    }
+    if (axis >= axis_count) return;
+  }
+}
+
+}  // namespace
+
+CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
+    : axes_(axes), cell_count_(cell_count) {
+  if (axes.count == 0 || axes.cells[0] == 0 || cell_count % axes.cells[0] != 0) {
+    throw std::invalid_argument("cell lines: the grid has no joint-0 lines");
+  }
+  line_cells_ = axes.cells[0];
+  words_per_line_ = (line_cells_ + 63) / 64;
+  line_count_ = cell_count / line_cells_;
+  for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
+    line_stride_[axis] = axes.stride[axis] / line_cells_;
+  }
+  words_.assign(line_count_ * words_per_line_, 0);
+}
+
+void CellLines::clear() { std::fill(words_.begin(), words_.end(), 0); }
+
+void CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
+  if (words_per_line_ == 1) {
+    add_box_one_word_lines(start, extents);
+  } else {
+    add_box_long_lines(start, extents);
+  }
+}
+
+void CellLines::add_box_one_word_lines(CellIndex start, const std::uint8_t* extents) {
+  const std::uint64_t mask = bit_run(start % line_cells_, extents[0]);
+  const std::size_t first_line = start / line_cells_;
+  std::uint64_t* const words = words_.data();
+  if (axes_.count <= 4) {
+    // The common grid (joints 1-4 discretised): three plain loops, the innermost over
+    // neighbouring words.
+    const std::uint32_t run = axes_.count > 1 ? extents[1] : 1;
+    const std::uint32_t planes = axes_.count > 2 ? extents[2] : 1;
+    const std::uint32_t volumes = axes_.count > 3 ? extents[3] : 1;
+    for (std::uint32_t k3 = 0; k3 < volumes; ++k3) {
+      std::uint64_t* plane = words + first_line + k3 * line_stride_[3];
+      for (std::uint32_t k2 = 0; k2 < planes; ++k2, plane += line_stride_[2]) {
+        for (std::uint32_t k1 = 0; k1 < run; ++k1) plane[k1] |= mask;
+      }
+    }
+    return;
+  }
+  const std::uint32_t run = extents[1];
+  for_each_line_run(axes_.count, line_stride_, first_line, extents, [&](std::size_t line_index) {
+    std::uint64_t* line = words + line_index;
+    for (std::uint32_t i = 0; i < run; ++i) line[i] |= mask;
+  });
+}
+
+void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents) {
+  // The masks of the row inside a line: at most ceil(255 / 64) + 1 words.
+  std::uint32_t word_in_line[5]{};
+  std::uint64_t masks[5]{};
+  std::uint32_t parts = 0;
+  for (std::uint32_t cell = start % line_cells_, left = extents[0]; left > 0; ++parts) {
+    const std::uint32_t count = std::min(left, 64 - cell % 64);
+    word_in_line[parts] = cell / 64;
+    masks[parts] = bit_run(cell % 64, count);
+    cell += count;
+    left -= count;
+  }
+  const std::uint32_t run = axes_.count > 1 ? extents[1] : 1;
+  std::uint64_t* const words = words_.data();
+  for_each_line_run(axes_.count, line_stride_, start / line_cells_, extents,
+                    [&](std::size_t first_line) {
+                      for (std::uint32_t i = 0; i < run; ++i) {
+                        std::uint64_t* line = words + (first_line + i) * words_per_line_;
+                        for (std::uint32_t p = 0; p < parts; ++p) line[word_in_line[p]] |= masks[p];
+                      }
+                    });
+}
+
+void CellLines::pack_into(CellSet& cells) const {
+  if (cells.cell_count() != cell_count_) throw std::invalid_argument("cell sets of different grids");
+  std::uint64_t* const out = cells.words().data();
+  cells.clear();
+  for (std::size_t line = 0; line < line_count_; ++line) {
+    const std::uint64_t* in = words_.data() + line * words_per_line_;
+    std::size_t at = line * line_cells_;
+    for (std::uint32_t word = 0, left = line_cells_; left > 0; ++word) {
+      const std::uint32_t count = std::min<std::uint32_t>(left, 64);
+      const std::uint64_t bits = in[word] & bit_run(0, count);
+      // `bits` lands at bit `at`, over at most two words of the compact layout.
+      out[at / 64] |= bits << (at % 64);
+      if (at % 64 != 0 && at % 64 + count > 64) out[at / 64 + 1] |= bits >> (64 - at % 64);
+      at += count;
+      left -= count;
+    }
+  }
+}
+
+}  // namespace safecell

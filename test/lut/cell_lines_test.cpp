@@ -1,0 +1,90 @@
+#include "safecell/lut/cell_lines.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+// Box axes of a grid with `count` axes of random sizes; joint 0 up to 150 cells, so that lines of
+// one word and of several words are both drawn.
+BoxAxes random_axes(std::mt19937_64& rng) {
+  BoxAxes axes;
+  axes.count = std::uniform_int_distribution<std::uint32_t>(1, 6)(rng);
+  CellIndex stride = 1;
+  for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
+    axes.joint[axis] = axis;
+    axes.stride[axis] = stride;
+    axes.cells[axis] =
+        std::uniform_int_distribution<std::uint32_t>(2, axis == 0 ? 150 : (axes.count > 4 ? 4 : 9))(
+            rng);
+    stride *= axes.cells[axis];
+  }
+  return axes;
+}
+
+CellIndex cell_count_of(const BoxAxes& axes) {
+  return axes.stride[axes.count - 1] * axes.cells[axes.count - 1];
+}
+
+TEST(CellLines, PackedBoxesEqualTheBoxesSetRowByRow) {
+  test::PropertyRun run(300);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const BoxAxes axes = random_axes(run.rng());
+    const CellIndex cells = cell_count_of(axes);
+    CellLines lines(axes, cells);
+    CellSet oracle(cells);
+    const int boxes = std::uniform_int_distribution<int>(0, 6)(run.rng());
+    for (int b = 0; b < boxes; ++b) {
+      CellIndex start = 0;
+      std::uint8_t extents[kMaxJoints]{};
+      for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
+        const auto low = std::uniform_int_distribution<std::uint32_t>(0, axes.cells[axis] - 1)(
+            run.rng());
+        const auto extent = std::uniform_int_distribution<std::uint32_t>(
+            1, std::min<std::uint32_t>(255, axes.cells[axis] - low))(run.rng());
+        start += low * axes.stride[axis];
+        extents[axis] = static_cast<std::uint8_t>(extent);
+      }
+      lines.add_box(start, extents);
+      for_each_box_row(axes, start, extents, [&](CellIndex first, std::uint32_t run_cells) {
+        oracle.set_range(first, first + run_cells);
+      });
+    }
+    CellSet packed(cells);
+    packed.fill();  // pack_into overwrites what was there
+    lines.pack_into(packed);
+    ASSERT_EQ(packed, oracle) << "grid of " << cells << " cells, joint 0 has " << axes.cells[0];
+    lines.clear();
+    lines.pack_into(packed);
+    ASSERT_FALSE(packed.any());
+  }
+}
+
+TEST(CellLines, OneWordPerLineUpTo64CellsAlongJointZero) {
+  BoxAxes axes;
+  axes.count = 2;
+  axes.stride[0] = 1;
+  axes.cells[0] = 64;
+  axes.stride[1] = 64;
+  axes.cells[1] = 3;
+  EXPECT_EQ(CellLines(axes, 192).words_per_line(), 1U);
+  axes.cells[0] = 65;
+  axes.stride[1] = 65;
+  EXPECT_EQ(CellLines(axes, 195).words_per_line(), 2U);
+  EXPECT_EQ(CellLines(axes, 195).line_count(), 3U);
+}
+
+TEST(CellLines, RefusesAGridThatIsNotWholeLines) {
+  BoxAxes axes;
+  axes.count = 1;
+  axes.stride[0] = 1;
+  axes.cells[0] = 10;
+  EXPECT_THROW(CellLines(axes, 25), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace safecell
