@@ -87,6 +87,38 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
   EXPECT_GT(nonempty, run.iterations() / 3) << "the random scenes forbid too little to test";
 }
 
+TEST(FusionEquivalence, ACameraStopsEarlyOnceItsSetHoldsEverythingItSees) {
+  const test::CoarseTables tables;
+  const LutSet& luts = tables.luts;
+  FusionSettings settings;
+  settings.camera_threshold = 1;
+  std::vector<CameraObservation> observations(luts.cameras.size());
+  for (auto& observation : observations) {
+    observation.known = true;
+    observation.blocked = FeatureMask(luts.columns, luts.rows);
+    observation.blocked.set_rect(FeatureRect{0, 0, static_cast<std::uint16_t>(luts.columns - 1),
+                                             static_cast<std::uint16_t>(luts.rows - 1)});
+  }
+  observations[1].blocked.clear();
+  ForbiddenMapFusion fast(luts, tables.silhouettes, settings);
+  BaselineFusion baseline(luts, tables.silhouettes, settings);
+  // Occlusion-aware removal keeps the robot's pixels that border obstacles, so with everything
+  // blocked camera 0 can see all its cells, but whether it does depends on the robot's cell.
+  int stopped_early = 0;
+  for (CellIndex robot_cell = 0; robot_cell < luts.static_cells.cell_count() && stopped_early < 3;
+       robot_cell += 7) {
+    const CellSet& fused = fast.fuse(observations, robot_cell);
+    ASSERT_EQ(fused, baseline.fuse(observations, robot_cell)) << "robot cell " << robot_cell;
+    EXPECT_FALSE(fast.counts().saturated[1]);
+    EXPECT_FALSE(fast.suspicious(1).any());
+    if (!fast.counts().saturated[0]) continue;
+    ++stopped_early;
+    EXPECT_EQ(fast.suspicious(0), fast.observable(0)) << "robot cell " << robot_cell;
+    EXPECT_EQ(fused, dense_oracle(luts, tables.silhouettes, observations, robot_cell, settings));
+  }
+  EXPECT_EQ(stopped_early, 3) << "camera 0 never held every cell it sees";
+}
+
 TEST(FusionEquivalence, UnknownCameraMarksEverythingItCanSee) {
   const test::CoarseTables tables;
   const CspaceGrid& grid = tables.grid;

@@ -64,6 +64,25 @@ TEST(CellLines, PackedBoxesEqualTheBoxesSetRowByRow) {
   }
 }
 
+TEST(CellLines, ContainsIsTheSubsetRelation) {
+  BoxAxes axes;
+  axes.count = 2;
+  axes.stride[0] = 1;
+  axes.cells[0] = 70;
+  axes.stride[1] = 70;
+  axes.cells[1] = 4;
+  CellLines small(axes, 280);
+  CellLines large(axes, 280);
+  const std::uint8_t small_box[] = {5, 2};
+  const std::uint8_t large_box[] = {30, 3};
+  small.add_box(66, small_box);  // cells 66..70 of lines 0 and 1: across the word boundary
+  EXPECT_TRUE(small.contains(CellLines(axes, 280)));
+  EXPECT_FALSE(large.contains(small));
+  EXPECT_EQ(large.add_box(50, large_box), 3U);
+  EXPECT_TRUE(large.contains(small));
+  EXPECT_FALSE(small.contains(large));
+}
+
 TEST(CellLines, OneWordPerLineUpTo64CellsAlongJointZero) {
   BoxAxes axes;
   axes.count = 2;

@@ -1,6 +1,7 @@
 #include "safecell/fusion/baseline_fusion.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -31,6 +32,7 @@ BaselineFusion::BaselineFusion(const LutSet& luts, const RobotSilhouettes& silho
   counters_.assign(cells, 0);
   stamps_.assign(cells, 0);
   forbidden_ = CellSet(cells);
+  pixel_cells_ = CellSet(cells);
 }
 
 void BaselineFusion::count_cell(CellIndex cell, std::uint8_t camera_stamp) {
@@ -62,7 +64,18 @@ const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observ
         const std::size_t pixel =
             static_cast<std::size_t>(row) * static_cast<std::size_t>(obstacles.columns()) +
             static_cast<std::size_t>(column);
-        table.for_each_cell(pixel, [&](CellIndex cell) { count_cell(cell, stamp); });
+        // The pixel's cells each once, as the paper's list holds them: its boxes may overlap,
+        // so they are gathered first.
+        pixel_cells_.clear();
+        table.add_cells(pixel, pixel_cells_);
+        const std::vector<std::uint64_t>& words = pixel_cells_.words();
+        for (std::size_t word = 0; word < words.size(); ++word) {
+          for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+            count_cell(static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(
+                                                              std::countr_zero(bits))),
+                       stamp);
+          }
+        }
       }
     }
   }

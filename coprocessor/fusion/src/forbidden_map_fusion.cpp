@@ -71,9 +71,14 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     if (camera.pixel_to_cells.cell_count() != cells) {
       throw std::invalid_argument("LUT-2 of camera '" + camera.camera + "' is of another grid");
     }
-    observable_.push_back(observable_cells(camera.pixel_to_cells));
     suspicious_.emplace_back(cells);
     suspicious_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
+    observable_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
+    for (std::size_t pixel = 0; pixel < camera.pixel_to_cells.pixel_count(); ++pixel) {
+      camera.pixel_to_cells.add_cells(pixel, observable_lines_.back());
+    }
+    observable_.emplace_back(cells);
+    observable_lines_.back().pack_into(observable_.back());
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
     remaining_.emplace_back(luts.columns, luts.rows);
@@ -83,6 +88,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
   critical_ = CellSet(cells);
   forbidden_ = CellSet(cells);
   counts_.obstacle_pixels.assign(luts.cameras.size(), 0);
+  counts_.saturated.assign(luts.cameras.size(), false);
 }
 
 void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observations) const {
@@ -103,6 +109,57 @@ void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observation
   }
 }
 
+bool ForbiddenMapFusion::back_project(std::size_t camera) {
+  CellLines& suspicious = suspicious_lines_[camera];
+  suspicious.clear();
+  const CameraLuts& tables = luts_.cameras[camera];
+  FeatureMask& remaining = remaining_[camera];
+  remaining = obstacles_[camera];
+  // Once the set holds every cell the camera can see, no pixel can add to it. Testing that costs
+  // about one pass over the set, so it is done each time boxes of as many lines have been added:
+  // at most doubling the work, and ending it early where obstacles fill much of the view.
+  std::size_t lines_since_check = 0;
+  const auto add = [&](const PixelToCellsTable& table, std::size_t entry) {
+    lines_since_check += table.add_cells(entry, suspicious);
+    if (lines_since_check < suspicious.line_count()) return false;
+    lines_since_check = 0;
+    return suspicious.contains(observable_lines_[camera]);
+  };
+  // Whole blocks first, the coarsest level first: a block's cells are the union of its pixels'.
+  for (std::size_t level = tables.pixel_blocks.size(); level >= 1; --level) {
+    const PixelToCellsTable& blocks = tables.pixel_blocks[level - 1];
+    const int size = 1 << level;
+    for (int y = 0; y < blocks.rows(); ++y) {
+      for (int x = 0; x < blocks.columns(); ++x) {
+        const FeatureRect block{static_cast<std::uint16_t>(x * size),
+                                static_cast<std::uint16_t>(y * size),
+                                static_cast<std::uint16_t>(x * size + size - 1),
+                                static_cast<std::uint16_t>(y * size + size - 1)};
+        if (!remaining.all_in_rect(block)) continue;
+        if (add(blocks, static_cast<std::size_t>(y) * static_cast<std::size_t>(blocks.columns()) +
+                            static_cast<std::size_t>(x))) {
+          return true;
+        }
+        remaining.reset_rect(block);
+      }
+    }
+  }
+  for (int row = 0; row < remaining.rows(); ++row) {
+    const std::uint64_t* words = remaining.row_words(row);
+    for (int word = 0; word < remaining.words_per_row(); ++word) {
+      for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+        const int column = word * 64 + std::countr_zero(bits);
+        if (add(tables.pixel_to_cells,
+                static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
+                    static_cast<std::size_t>(column))) {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
 const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& observations,
                                         CellIndex robot_cell) {
   check(observations);
@@ -114,48 +171,13 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {
       counts_.obstacle_pixels[camera] = 0;
+      counts_.saturated[camera] = false;
       camera_sets_.push_back(&observable_[camera]);
       continue;
     }
-    CellLines& suspicious = suspicious_lines_[camera];
-    suspicious.clear();
-    const CameraLuts& tables = luts_.cameras[camera];
-    FeatureMask& remaining = remaining_[camera];
-    remaining = obstacles_[camera];
-    const std::size_t pixels = remaining.count();
-    // Whole blocks first, the coarsest level first: a block's cells are the union of its pixels'.
-    for (std::size_t level = tables.pixel_blocks.size(); level >= 1; --level) {
-      const PixelToCellsTable& blocks = tables.pixel_blocks[level - 1];
-      const int size = 1 << level;
-      for (int y = 0; y < blocks.rows(); ++y) {
-        for (int x = 0; x < blocks.columns(); ++x) {
-          const FeatureRect block{static_cast<std::uint16_t>(x * size),
-                                  static_cast<std::uint16_t>(y * size),
-                                  static_cast<std::uint16_t>(x * size + size - 1),
-                                  static_cast<std::uint16_t>(y * size + size - 1)};
-          if (!remaining.all_in_rect(block)) continue;
-          blocks.add_cells(
-              static_cast<std::size_t>(y) * static_cast<std::size_t>(blocks.columns()) +
-                  static_cast<std::size_t>(x),
-              suspicious);
-          remaining.reset_rect(block);
-        }
-      }
-    }
-    const PixelToCellsTable& table = tables.pixel_to_cells;
-    for (int row = 0; row < remaining.rows(); ++row) {
-      const std::uint64_t* words = remaining.row_words(row);
-      for (int word = 0; word < remaining.words_per_row(); ++word) {
-        for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
-          const int column = word * 64 + std::countr_zero(bits);
-          table.add_cells(static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
-                              static_cast<std::size_t>(column),
-                          suspicious);
-        }
-      }
-    }
-    suspicious.pack_into(suspicious_[camera]);
-    counts_.obstacle_pixels[camera] = pixels;
+    counts_.saturated[camera] = back_project(camera);
+    suspicious_lines_[camera].pack_into(suspicious_[camera]);
+    counts_.obstacle_pixels[camera] = obstacles_[camera].count();
     camera_sets_.push_back(&suspicious_[camera]);
   }
   count_at_least(camera_sets_, settings_.camera_threshold, at_least_, critical_);

@@ -52,12 +52,22 @@ CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
 
 void CellLines::clear() { std::fill(words_.begin(), words_.end(), 0); }
 
-void CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
+std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
   if (words_per_line_ == 1) {
     add_box_one_word_lines(start, extents);
   } else {
     add_box_long_lines(start, extents);
   }
+  std::size_t lines = 1;
+  for (std::uint32_t axis = 1; axis < axes_.count; ++axis) lines *= extents[axis];
+  return lines;
+}
+
+bool CellLines::contains(const CellLines& other) const {
+  if (other.words_.size() != words_.size()) throw std::invalid_argument("cell sets of different grids");
+  std::uint64_t missing = 0;
+  for (std::size_t i = 0; i < words_.size(); ++i) missing |= other.words_[i] & ~words_[i];
+  return missing == 0;
 }
 
 void CellLines::add_box_one_word_lines(CellIndex start, const std::uint8_t* extents) {

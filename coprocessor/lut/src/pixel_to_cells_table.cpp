@@ -112,9 +112,12 @@ void PixelToCellsTable::add_cells(std::size_t pixel, CellSet& cells) const {
   });
 }
 
-void PixelToCellsTable::add_cells(std::size_t pixel, CellLines& cells) const {
-  for_each_box(pixel,
-               [&cells](CellIndex start, const std::uint8_t* extents) { cells.add_box(start, extents); });
+std::size_t PixelToCellsTable::add_cells(std::size_t pixel, CellLines& cells) const {
+  std::size_t lines = 0;
+  for_each_box(pixel, [&](CellIndex start, const std::uint8_t* extents) {
+    lines += cells.add_box(start, extents);
+  });
+  return lines;
 }
 
 }  // namespace safecell

@@ -33,6 +33,7 @@ class BaselineFusion {
   std::vector<std::uint8_t> stamps_;
   std::vector<FeatureMask> robot_;
   std::vector<FeatureMask> obstacles_;
+  CellSet pixel_cells_;  // the cells of one pixel
   CellSet forbidden_;
 };
 

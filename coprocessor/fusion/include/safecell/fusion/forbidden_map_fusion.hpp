@@ -6,7 +6,8 @@
 //
 // Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
 // all obstacles adds its precomputed union at once (pixel_table_builder.hpp). Boxes are filled in
-// the line layout (cell_lines.hpp) and each camera's set is packed once at the end.
+// the line layout (cell_lines.hpp) and each camera's set is packed once at the end; a camera
+// stops early once its set holds every cell it can see.
 //
 // Counting is per camera, not per pixel: many pixels of one camera marking a cell still count
 // once. An unknown view counts as suspecting every cell the camera can see at all.
@@ -31,6 +32,8 @@ struct FusionSettings {
 
 struct FusionCounts {
   std::vector<std::size_t> obstacle_pixels;  // per camera, after robot removal (0 when unknown)
+  // Per camera: back-projection stopped early because the set held every cell the camera sees.
+  std::vector<bool> saturated;
   std::size_t critical_cells = 0;
   std::size_t forbidden_cells = 0;
 };
@@ -71,6 +74,9 @@ class ForbiddenMapFusion {
 
  private:
   void check(const std::vector<CameraObservation>& observations) const;
+  // The camera's suspicious cells from its obstacle pixels, into suspicious_lines_[camera].
+  // Returns whether it stopped early, the set holding every cell the camera can see.
+  bool back_project(std::size_t camera);
 
   const LutSet& luts_;
   const RobotSilhouettes& silhouettes_;
@@ -78,6 +84,7 @@ class ForbiddenMapFusion {
   std::vector<CellSet> observable_;
   std::vector<CellLines> suspicious_lines_;  // filled box by box, then packed into suspicious_
   std::vector<CellSet> suspicious_;
+  std::vector<CellLines> observable_lines_;  // observable_ in the line layout
   std::vector<const CellSet*> camera_sets_;  // this cycle's set per camera
   std::vector<CellSet> at_least_;  // at_least_[k]: cells suspected by at least k + 1 cameras
   std::vector<FeatureMask> robot_;

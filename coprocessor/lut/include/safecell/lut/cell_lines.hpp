@@ -22,7 +22,10 @@ class CellLines {
   void clear();
   // ORs the box with lowest cell `start` and one extent per box axis (precondition: the box lies
   // in the grid, as PixelToCellsTable checks when it is made).
-  void add_box(CellIndex start, const std::uint8_t* extents);
+  // Returns the number of lines the box spans (its cost).
+  std::size_t add_box(CellIndex start, const std::uint8_t* extents);
+  // Whether every cell of `other` (of the same grid) is in this set.
+  [[nodiscard]] bool contains(const CellLines& other) const;
   // Writes the set into `cells` (of the same grid) in the compact layout.
   void pack_into(CellSet& cells) const;
 

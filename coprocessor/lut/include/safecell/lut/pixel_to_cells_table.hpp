@@ -46,8 +46,9 @@ class PixelToCellsTable {
   // ORs the cells of one pixel into `cells` (precondition: pixel < pixel_count(), cells of the
   // table's grid). The hot loop of fusion.
   void add_cells(std::size_t pixel, CellSet& cells) const;
-  // The same into the line layout (cell_lines.hpp), which fills boxes faster.
-  void add_cells(std::size_t pixel, CellLines& cells) const;
+  // The same into the line layout (cell_lines.hpp), which fills boxes faster. Returns the number
+  // of lines the pixel's boxes span.
+  std::size_t add_cells(std::size_t pixel, CellLines& cells) const;
   // Calls visit(lowest cell, extents) for every box of the pixel.
   template <typename Visit>
   void for_each_box(std::size_t pixel, Visit visit) const;
