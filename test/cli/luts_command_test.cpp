@@ -43,6 +43,33 @@ TEST_F(LutsCommand, BuildsOnceAndReportsSizes) {
   EXPECT_NE(info.out.find("model mode"), std::string::npos);
 }
 
+TEST_F(LutsCommand, CheckComparesTheRecordedRobotWithTheModel) {
+  const auto check = test::safecell_cli({"luts", "check", "--cell", cell_.string(), "--key-stride",
+                                         "6", "--wrist-samples", "1", "--json"});
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  const auto report = nlohmann::json::parse(check.out);
+  EXPECT_FALSE(report["flagged"].get<bool>());
+  ASSERT_EQ(report["cameras"].size(), 4U);
+  for (const auto& camera : report["cameras"]) {
+    EXPECT_GE(camera["coverage"].get<double>(), 0.95) << camera.dump();
+    EXPECT_GT(camera["keys"].get<int>(), 0) << camera.dump();
+  }
+  const auto table = test::safecell_cli(
+      {"luts", "check", "--cell", cell_.string(), "--key-stride", "6", "--wrist-samples", "1"});
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_NE(table.out.find("coverage"), std::string::npos) << table.out;
+}
+
+TEST_F(LutsCommand, RecordRefusesCamerasTooCloseForItsBoundBeforeRecording) {
+  const fs::path out = folder_ / "recorded";
+  const auto record = test::safecell_cli({"luts", "record", "--cell", cell_.string(), "--out",
+                                          out.string(), "--key-stride", "6"});
+  EXPECT_EQ(record.exit_code, 2);
+  EXPECT_NE(record.err.find("cam0"), std::string::npos) << record.err;
+  EXPECT_EQ(record.err.find("recording "), std::string::npos) << "recorded before refusing";
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(LutsCommand, RefusesWhatIsNotALutFile) {
   const fs::path bogus = folder_ / "bogus.sclut";
   std::ofstream(bogus) << std::string(200, 'x');

@@ -9,6 +9,7 @@
 #include "safecell/cli/demo_command.hpp"
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
+#include "safecell/cli/luts_record_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/cli/validate_command.hpp"
 #include "safecell/files/atomic_write.hpp"
@@ -144,6 +145,48 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->required();
   info_command->add_flag("--json", lut_info.json, "Print JSON instead of a table");
   info_command->callback([&] { action = [&] { run_luts_info(lut_info, out); }; });
+
+  LutsRecordOptions record;
+  const auto add_recording_options = [&record](CLI::App* command) {
+    command->add_option("--cell", record.cell_path,
+                        "Cell file (YAML); without it the built-in default cell");
+    command
+        ->add_option("--key-stride", record.key_stride,
+                     "Cells between key configurations along each discretised joint (1: every "
+                     "cell, the paper's brute force)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    command
+        ->add_option("--wrist-samples", record.wrist_samples,
+                     "Values recorded per joint that is not discretised")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    command
+        ->add_option("--min-coverage", record.min_coverage,
+                     "Share of the recorded robot that must lie inside the model's silhouettes")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    command->add_flag("--json", record.json, "Print one JSON object instead of a table");
+  };
+  CLI::App* record_command = luts->add_subcommand(
+      "record",
+      "Build the tables from difference images of the robot at key configurations (recorded "
+      "mode; the simulated cell stands in for the real robot and cameras)");
+  add_recording_options(record_command);
+  record_command->add_option("--out", record.out_dir, "Folder for the LUT file")->required();
+  record_command
+      ->add_option("--padding", record.padding_m, "Margin added to the motion bound, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  record_command->callback([&] { action = [&] { run_luts_record(record, out, err); }; });
+  CLI::App* check_command = luts->add_subcommand(
+      "check",
+      "Compare what each camera sees of the robot with the model's silhouettes and flag a "
+      "camera whose calibration is off (exit 1); the simulated cell stands in for the real "
+      "robot and cameras");
+  add_recording_options(check_command);
+  check_command->callback(
+      [&] { action = [&] { exit_code = run_luts_check(record, out, err); }; });
 
   ValidateOptions validate;
   CLI::App* validate_command = app.add_subcommand(

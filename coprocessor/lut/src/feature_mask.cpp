@@ -202,4 +202,32 @@ void FeatureMask::check_same_shape(const FeatureMask& other) const {
   }
 }
 
+void FeatureMask::dilate(int columns, int rows) {
+  const auto words = static_cast<std::size_t>(words_per_row_);
+  const int spare = words_per_row_ * 64 - columns_;  // unused bits at the end of each row
+  const std::uint64_t last_word_bits = ~std::uint64_t{0} >> spare;
+  std::vector<std::uint64_t> row(words);
+  for (int r = 0; r < rows_; ++r) {
+    std::uint64_t* out = row_words(r);
+    for (int step = 0; step < columns; ++step) {
+      std::copy(out, out + words, row.begin());
+      for (std::size_t w = 0; w < words; ++w) {
+        std::uint64_t grown = row[w] | (row[w] << 1) | (row[w] >> 1);
+        if (w > 0) grown |= row[w - 1] >> 63;
+        if (w + 1 < words) grown |= row[w + 1] << 63;
+        out[w] = grown;
+      }
+      out[words - 1] &= last_word_bits;
+    }
+  }
+  const std::vector<std::uint64_t> grown_rows = words_;
+  for (int r = 0; r < rows_; ++r) {
+    std::uint64_t* out = row_words(r);
+    for (int from = std::max(0, r - rows); from <= std::min(rows_ - 1, r + rows); ++from) {
+      const std::uint64_t* in = grown_rows.data() + static_cast<std::size_t>(from) * words;
+      for (std::size_t w = 0; w < words; ++w) out[w] |= in[w];
+    }
+  }
+}
+
 }  // namespace safecell

@@ -60,6 +60,9 @@ class FeatureMask {
   FeatureMask& operator&=(const FeatureMask& other);
   // Removes the cells of `other`.
   FeatureMask& subtract(const FeatureMask& other);
+  // Grows every set cell into the rectangle of +-columns x +-rows around it (clipped to the mask;
+  // precondition: both >= 0).
+  void dilate(int columns, int rows);
 
   [[nodiscard]] std::uint64_t* row_words(int row) {
     return words_.data() + static_cast<std::size_t>(row) * static_cast<std::size_t>(words_per_row_);
