@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -79,6 +80,37 @@ TEST(FeatureMask, RectanglesCoverTheMaskExactlyWithoutOverlap) {
     }
     EXPECT_EQ(rebuilt, mask);
     EXPECT_EQ(area, mask.count()) << "rectangles overlap";
+  }
+}
+
+TEST(FeatureMask, DilateEqualsGrowingEveryCellByHand) {
+  test::PropertyRun run(100);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const int columns = std::uniform_int_distribution<int>(1, 150)(run.rng());
+    const int rows = std::uniform_int_distribution<int>(1, 40)(run.rng());
+    const int grow_columns = std::uniform_int_distribution<int>(0, 5)(run.rng());
+    const int grow_rows = std::uniform_int_distribution<int>(0, 5)(run.rng());
+    FeatureMask mask(columns, rows);
+    const int cells = std::uniform_int_distribution<int>(0, 12)(run.rng());
+    for (int k = 0; k < cells; ++k) {
+      mask.set(std::uniform_int_distribution<int>(0, columns - 1)(run.rng()),
+               std::uniform_int_distribution<int>(0, rows - 1)(run.rng()));
+    }
+    FeatureMask oracle(columns, rows);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < columns; ++c) {
+        if (!mask.test(c, r)) continue;
+        for (int y = std::max(0, r - grow_rows); y <= std::min(rows - 1, r + grow_rows); ++y) {
+          for (int x = std::max(0, c - grow_columns); x <= std::min(columns - 1, c + grow_columns);
+               ++x) {
+            oracle.set(x, y);
+          }
+        }
+      }
+    }
+    mask.dilate(grow_columns, grow_rows);
+    ASSERT_EQ(mask, oracle) << columns << " x " << rows << " grown by " << grow_columns << ", "
+                            << grow_rows;
   }
 }
 
