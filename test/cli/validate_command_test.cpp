@@ -16,7 +16,7 @@ TEST(ValidateCommand, ReportsTheIssuesKeysAndMissesNothing) {
                                        (scratch.path() / "cache").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
   const auto report = nlohmann::json::parse(run.out);
-  for (const char* key : {"scenes", "configs_checked", "missed", "false_positive_rate",
+  for (const char* key : {"scenes", "objects", "configs_checked", "missed", "false_positive_rate",
                           "phantom_cells", "fusion_ms_p99"}) {
     EXPECT_TRUE(report.contains(key)) << key;
   }

@@ -30,6 +30,24 @@ TEST(GroundTruthValidation, NoCollisionWithASeenPersonIsMissed) {
   EXPECT_GT(report.fusion_ms_p99, 0.0);
 }
 
+TEST(GroundTruthValidation, BoxesArePlacedSeenAndNeverMissed) {
+  const test::CoarseTables tables;
+  const auto& [cell, grid, luts, silhouettes] = tables;
+  ValidationOptions options;
+  options.scenes = 5;
+  options.seed = 3;
+  options.max_humans = 1;
+  options.max_objects = 4;
+  options.configurations_per_scene = 150;
+  options.phantom_samples = 20;
+  const ValidationReport report =
+      validate_against_ground_truth(cell, grid, luts, silhouettes, options);
+  EXPECT_GE(report.objects, options.scenes) << "too few boxes placed to test them";
+  EXPECT_GT(report.colliding, 10U);
+  EXPECT_EQ(report.missed, 0U);
+  for (const auto& missed : report.missed_cases) ADD_FAILURE() << "missed " << missed.obstacle;
+}
+
 TEST(GroundTruthValidation, AbsurdOptionsAreRefused) {
   const test::CoarseTables tables;
   const auto& [cell, grid, luts, silhouettes] = tables;
@@ -39,6 +57,10 @@ TEST(GroundTruthValidation, AbsurdOptionsAreRefused) {
                std::invalid_argument);
   options.scenes = 1;
   options.max_humans = 0;
+  EXPECT_THROW((void)validate_against_ground_truth(cell, grid, luts, silhouettes, options),
+               std::invalid_argument);
+  options.max_humans = 1;
+  options.max_objects = 11;
   EXPECT_THROW((void)validate_against_ground_truth(cell, grid, luts, silhouettes, options),
                std::invalid_argument);
 }

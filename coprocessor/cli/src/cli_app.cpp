@@ -208,6 +208,11 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->capture_default_str()
       ->check(CLI::Range(1, 10));
   validate_command
+      ->add_option("--objects", validate.objects,
+                   "At most this many boxes per scene (objects the cell file does not know)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 10));
+  validate_command
       ->add_option("--removal", validate.removal, "Robot removal: occlusion-aware or plain")
       ->capture_default_str();
   validate_command->add_option("--lut-cache", validate.lut_cache,

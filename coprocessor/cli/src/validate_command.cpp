@@ -28,6 +28,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   validation.seed = options.seed;
   validation.configurations_per_scene = options.configurations;
   validation.max_humans = options.humans;
+  validation.max_objects = options.objects;
   validation.fusion.camera_threshold = cell.camera_threshold;
   validation.fusion.removal = removal_of(options.removal);
   const CachedLuts luts = cell_luts(cell, grid, options.lut_cache, err);
@@ -41,6 +42,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
 
   nlohmann::ordered_json json;
   json["scenes"] = report.scenes;
+  json["objects"] = report.objects;
   json["configs_checked"] = report.configs_checked;
   json["colliding"] = report.colliding;
   json["missed"] = report.missed;
@@ -63,11 +65,12 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   if (options.json) {
     out << json.dump(2) << '\n';
   } else {
-    out << "validated " << report.scenes << " scenes, " << grouped(report.configs_checked)
+    out << "validated " << report.scenes << " scenes (with " << report.objects
+        << " boxes among the humans), " << grouped(report.configs_checked)
         << " configurations against FCL ground truth (seed " << options.seed << ", "
         << options.removal << " robot removal)\n"
         << "  colliding " << grouped(report.colliding) << ", missed " << report.missed
-        << ", with a human fewer than " << cell.camera_threshold << " cameras saw " << report.unseen
+        << ", with a human or object fewer than " << cell.camera_threshold << " cameras saw " << report.unseen
         << "\n"
         << "  false positives " << fixed(100.0 * report.false_positive_rate, 1)
         << " % of free configurations, forbidden " << fixed(100.0 * report.forbidden_share, 1)

@@ -12,6 +12,7 @@ namespace {
 constexpr std::uint8_t kRobotAlbedo = 215;
 constexpr std::uint8_t kClothesAlbedo = 55;
 constexpr std::uint8_t kSkinAlbedo = 165;
+constexpr std::uint8_t kObjectAlbedo = 95;  // cardboard
 
 }  // namespace
 
@@ -43,6 +44,7 @@ std::vector<SurfaceMesh> SimulatedCell::moving_surfaces(const SimScene& scene) c
     body.erase(body.begin() + static_cast<std::ptrdiff_t>(head));
     surfaces.push_back(surface_of(body, kClothesAlbedo));
   }
+  for (const auto& object : scene.objects) surfaces.push_back(surface_of({object}, kObjectAlbedo));
   return surfaces;
 }
 

@@ -19,14 +19,24 @@ namespace {
 
 constexpr double kWallClearance_m = 0.3;
 
-struct Scene {
-  std::vector<double> q;
-  std::vector<HumanPose> humans;
-};
+// A box standing on the floor somewhere in the cell: 0.2-0.8 m a side, 0.2-1.2 m high, turned.
+PlacedShape random_object(double half_x, double half_y, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> side(0.2, 0.8);
+  const Eigen::Vector3d size(side(rng), side(rng),
+                             std::uniform_real_distribution<double>(0.2, 1.2)(rng));
+  PlacedShape object{Box{size}, Eigen::Isometry3d::Identity()};
+  object.pose.translate(Eigen::Vector3d(std::uniform_real_distribution<double>(-half_x, half_x)(rng),
+                                        std::uniform_real_distribution<double>(-half_y, half_y)(rng),
+                                        size.z() / 2.0));
+  object.pose.rotate(Eigen::AngleAxisd(
+      std::uniform_real_distribution<double>(-std::numbers::pi, std::numbers::pi)(rng),
+      Eigen::Vector3d::UnitZ()));
+  return object;
+}
 
-Scene random_scene(const CellModel& cell, const CspaceGrid& grid, std::mt19937_64& rng,
-                   int max_humans) {
-  Scene scene;
+SimScene random_scene(const CellModel& cell, const CspaceGrid& grid, std::mt19937_64& rng,
+                      int max_humans, int max_objects) {
+  SimScene scene;
   scene.q = random_configuration(grid, rng);
   const auto robot = collision_shapes_at(*cell.robot, scene.q);
   const double half_x = cell.config.size_m[0] / 2.0 - kWallClearance_m;
@@ -51,6 +61,17 @@ Scene random_scene(const CellModel& cell, const CspaceGrid& grid, std::mt19937_6
     if (!occupied.empty() && GroundTruth(occupied).collides(body)) continue;
     scene.humans.push_back(pose);
   }
+  // Objects where there is room as well, after the humans.
+  const int objects = std::uniform_int_distribution<int>(0, max_objects)(rng);
+  for (int attempt = 0; attempt < 200 && static_cast<int>(scene.objects.size()) < objects;
+       ++attempt) {
+    const PlacedShape object = random_object(half_x, half_y, rng);
+    std::vector<PlacedShape> occupied = cell.obstacles;
+    for (auto& body : moving_bodies(scene)) occupied.push_back(std::move(body));
+    if (GroundTruth({object}).collides(robot)) continue;
+    if (!occupied.empty() && GroundTruth(occupied).collides({object})) continue;
+    scene.objects.push_back(object);
+  }
   return scene;
 }
 
@@ -62,6 +83,10 @@ void check_options(const CellModel& cell, const ValidationOptions& options) {
   if (options.max_humans < 1 || options.max_humans > 10) {
     throw std::invalid_argument("humans per scene must be 1..10, got " +
                                 std::to_string(options.max_humans));
+  }
+  if (options.max_objects < 0 || options.max_objects > 10) {
+    throw std::invalid_argument("objects per scene must be 0..10, got " +
+                                std::to_string(options.max_objects));
   }
 }
 
@@ -86,18 +111,19 @@ ValidationReport validate_against_ground_truth(
   double forbidden_share_sum = 0.0;
   std::mt19937_64 rng(options.seed);
   for (std::size_t s = 0; s < options.scenes; ++s) {
-    const Scene scene = random_scene(cell, grid, rng, options.max_humans);
-    const auto frames =
-        sim.render(SimScene{scene.q, scene.humans}, 10 * s, 0.1 * static_cast<double>(s));
+    const SimScene scene =
+        random_scene(cell, grid, rng, options.max_humans, options.max_objects);
+    report.objects += scene.objects.size();
+    const auto frames = sim.render(scene, 10 * s, 0.1 * static_cast<double>(s));
     const CellSet& forbidden = pipeline.process(frames, scene.q);
     fusion_ms.push_back(pipeline.times().fusion_ms);
     features_ms.push_back(pipeline.times().features_ms);
     forbidden_share_sum += static_cast<double>(forbidden.count()) / grid.cell_count();
 
-    const SceneCheck check = check_scene(cell, grid, sim, pipeline, SimScene{scene.q, scene.humans},
-                                         options.configurations_per_scene, rng, s);
+    const SceneCheck check =
+        check_scene(cell, grid, sim, pipeline, scene, options.configurations_per_scene, rng, s);
     report += check;
-    phantom_sum += estimate_phantom_cells(cell, grid, pipeline, scene.humans,
+    phantom_sum += estimate_phantom_cells(cell, grid, pipeline, moving_bodies(scene),
                                           options.phantom_samples, options.phantom_distance_m, rng);
     if (progress) progress(s + 1, options.scenes);
   }

@@ -31,6 +31,14 @@ CellIndex cell_of(const CspaceGrid& grid, const std::vector<double>& q) {
 
 }  // namespace
 
+std::vector<PlacedShape> moving_bodies(const SimScene& scene) {
+  std::vector<PlacedShape> bodies = scene.objects;
+  for (const auto& human : scene.humans) {
+    for (auto& part : human_shapes(human)) bodies.push_back(std::move(part));
+  }
+  return bodies;
+}
+
 std::vector<double> random_configuration(const CspaceGrid& grid, std::mt19937_64& rng) {
   std::vector<double> q(grid.joint_count());
   for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
@@ -56,31 +64,45 @@ SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedC
                        const SensingPipeline& pipeline, const SimScene& scene,
                        std::size_t configurations, std::mt19937_64& rng, std::size_t scene_index) {
   SceneCheck check;
-  // How many cameras saw each human: its feature cells are obstacles there after robot removal.
-  check.cameras_seeing.assign(scene.humans.size(), 0);
+  // The scene's moving obstacles (humans, then objects) and how many cameras saw each: its
+  // feature cells are obstacles there after robot removal.
+  const std::size_t humans = scene.humans.size();
+  const std::size_t movers = humans + scene.objects.size();
+  check.cameras_seeing.assign(movers, 0);
   std::vector<PlacedShape> obstacles;
   std::vector<std::string> obstacle_names;
-  std::vector<int> obstacle_human;
-  for (std::size_t h = 0; h < scene.humans.size(); ++h) {
-    auto surfaces = sim.moving_surfaces(SimScene{scene.q, {scene.humans[h]}});
+  std::vector<int> obstacle_mover;  // -1: a static obstacle of the cell file
+  for (std::size_t m = 0; m < movers; ++m) {
+    SimScene alone{scene.q, {}, {}};
+    if (m < humans) {
+      alone.humans.push_back(scene.humans[m]);
+    } else {
+      alone.objects.push_back(scene.objects[m - humans]);
+    }
+    auto surfaces = sim.moving_surfaces(alone);
     surfaces.erase(surfaces.begin());  // the robot
     for (std::size_t c = 0; c < sim.camera_count(); ++c) {
-      const FeatureMask human = feature_cells_of(sim.coverage(c, surfaces), cell.feature_grid);
-      if (pipeline.observations()[c].known && human.intersects(pipeline.fusion().obstacles(c))) {
-        ++check.cameras_seeing[h];
+      const FeatureMask seen = feature_cells_of(sim.coverage(c, surfaces), cell.feature_grid);
+      if (pipeline.observations()[c].known && seen.intersects(pipeline.fusion().obstacles(c))) {
+        ++check.cameras_seeing[m];
       }
     }
-    for (auto& part : human_shapes(scene.humans[h])) {
+    const std::string name =
+        m < humans ? "human " + std::to_string(m + 1) : "object " + std::to_string(m - humans + 1);
+    for (auto& part : m < humans ? human_shapes(scene.humans[m]) : alone.objects) {
       obstacles.push_back(std::move(part));
-      obstacle_names.push_back("human " + std::to_string(h + 1));
-      obstacle_human.push_back(static_cast<int>(h));
+      obstacle_names.push_back(name);
+      obstacle_mover.push_back(static_cast<int>(m));
     }
   }
   for (std::size_t b = 0; b < cell.obstacles.size(); ++b) {
     obstacles.push_back(cell.obstacles[b]);
     obstacle_names.push_back(cell.config.obstacles.at(b).name);
-    obstacle_human.push_back(-1);
+    obstacle_mover.push_back(-1);
   }
+  std::vector<Eigen::Vector2d> targets;
+  for (const auto& human : scene.humans) targets.push_back(human.position_m);
+  for (const auto& object : scene.objects) targets.push_back(object.pose.translation().head<2>());
   if (obstacles.empty()) return check;
   const GroundTruth truth(obstacles);
   const CellSet& forbidden = pipeline.fusion().forbidden();
@@ -88,8 +110,8 @@ SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedC
 
   for (std::size_t k = 0; k < configurations; ++k) {
     std::vector<double> q = random_configuration(grid, rng);
-    if (k % 2 == 1 && !scene.humans.empty()) {  // turned towards a human
-      const auto& target = scene.humans[k / 2 % scene.humans.size()].position_m;
+    if (k % 2 == 1 && !targets.empty()) {  // turned towards a human or an object
+      const auto& target = targets[k / 2 % targets.size()];
       q[0] = std::clamp(std::atan2(target.y(), target.x()) +
                             std::uniform_real_distribution<double>(-0.3, 0.3)(rng),
                         grid.joint(0).lo_rad, grid.joint(0).hi_rad);
@@ -103,10 +125,10 @@ SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedC
       continue;
     }
     ++check.colliding;
-    const int human = obstacle_human[*hit];
-    const int seeing = human < 0 ? static_cast<int>(sim.camera_count())
-                                 : check.cameras_seeing[static_cast<std::size_t>(human)];
-    if (human >= 0 && seeing < threshold) {
+    const int mover = obstacle_mover[*hit];
+    const int seeing = mover < 0 ? static_cast<int>(sim.camera_count())
+                                 : check.cameras_seeing[static_cast<std::size_t>(mover)];
+    if (mover >= 0 && seeing < threshold) {
       ++check.unseen;
       continue;
     }
@@ -121,19 +143,16 @@ SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedC
 }
 
 double estimate_phantom_cells(const CellModel& cell, const CspaceGrid& grid,
-                              const SensingPipeline& pipeline, const std::vector<HumanPose>& humans,
-                              std::size_t samples, double distance_m, std::mt19937_64& rng) {
+                              const SensingPipeline& pipeline,
+                              const std::vector<PlacedShape>& bodies, std::size_t samples,
+                              double distance_m, std::mt19937_64& rng) {
   const CellSet& critical = pipeline.fusion().critical();
   std::vector<CellIndex> critical_cells;
   for (CellIndex c = critical.next_set(0); c < critical.cell_count();
        c = critical.next_set(c + 1)) {
     critical_cells.push_back(c);
   }
-  if (critical_cells.empty() || humans.empty() || samples == 0) return 0.0;
-  std::vector<PlacedShape> bodies;
-  for (const auto& human : humans) {
-    for (auto& part : human_shapes(human)) bodies.push_back(std::move(part));
-  }
+  if (critical_cells.empty() || bodies.empty() || samples == 0) return 0.0;
   const GroundTruth truth(bodies);
   std::size_t phantoms = 0;
   const std::size_t checked = std::min(samples, critical_cells.size());

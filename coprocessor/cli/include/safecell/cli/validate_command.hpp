@@ -16,6 +16,7 @@ struct ValidateOptions {
   std::uint64_t seed = 1;
   std::size_t configurations = 400;  // per scene
   int humans = 2;                    // at most, per scene
+  int objects = 1;                   // boxes, at most, per scene
   std::string removal = "occlusion-aware";
   std::string lut_cache;  // empty: the default cache folder
   bool json = false;

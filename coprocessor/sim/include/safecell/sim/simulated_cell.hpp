@@ -15,10 +15,12 @@
 
 namespace safecell {
 
-// One moment of the cell: the robot's joint values and where the humans are.
+// One moment of the cell: the robot's joint values, where the humans are, and objects put into
+// the cell that the cell file does not know (boxes left on the floor: seen and hit like humans).
 struct SimScene {
   std::vector<double> q;
   std::vector<HumanPose> humans;
+  std::vector<PlacedShape> objects{};
 };
 
 // Which of the robot's shapes the cameras see: its collision geometry (what the look-up tables
@@ -44,7 +46,8 @@ class SimulatedCell {
   std::vector<cv::Mat> render_surfaces(const std::vector<SurfaceMesh>& moving,
                                        std::uint64_t frame_index, double time_s);
 
-  // The robot and the humans as surfaces to render (robot first).
+  // The robot, the humans and the objects as surfaces to render (robot first, then one or more
+  // per human, then one per object).
   std::vector<SurfaceMesh> moving_surfaces(const SimScene& scene) const;
   // Pixels of one camera the robot (as it appears) covers, occlusion ignored (CV_8UC1, 255 =
   // covered).

@@ -2,6 +2,7 @@
 // Checks one processed scene of the simulated cell against the exact ground truth: robot
 // configurations (half random, half turned towards a human) are tested for collision with FCL and
 // compared with the forbidden map the pipeline made (definitions in ground_truth_validation.hpp).
+// The scene's humans and objects are its moving obstacles; the cell file's boxes are static.
 // Shared by `safecell validate` and `safecell demo`.
 
 #include <random>
@@ -29,7 +30,7 @@ struct SceneCheck {
   std::size_t free = 0;
   std::size_t false_positives = 0;
   std::vector<MissedCollision> missed_cases;
-  std::vector<int> cameras_seeing;  // per human
+  std::vector<int> cameras_seeing;  // per human, then per object
 
   SceneCheck& operator+=(const SceneCheck& other);
   // Forbidden but free, as a share of the free configurations checked.
@@ -48,11 +49,15 @@ struct SceneCheck {
                                      const SimScene& scene, std::size_t configurations,
                                      std::mt19937_64& rng, std::size_t scene_index);
 
+// The shapes of the scene's humans and objects.
+[[nodiscard]] std::vector<PlacedShape> moving_bodies(const SimScene& scene);
+
 // Critical cells of the last cycle whose robot, at the cell's centre, stays farther than
-// `distance_m` from every human: sampled (`samples` cells) and scaled to all critical cells.
+// `distance_m` from every body (moving_bodies()): sampled (`samples` cells) and scaled to all
+// critical cells.
 [[nodiscard]] double estimate_phantom_cells(const CellModel& cell, const CspaceGrid& grid,
                                             const SensingPipeline& pipeline,
-                                            const std::vector<HumanPose>& humans,
+                                            const std::vector<PlacedShape>& bodies,
                                             std::size_t samples, double distance_m,
                                             std::mt19937_64& rng);
 
