@@ -62,8 +62,8 @@ TEST_F(LutsCommand, CheckComparesTheRecordedRobotWithTheModel) {
 
 TEST_F(LutsCommand, RecordRefusesCamerasTooCloseForItsBoundBeforeRecording) {
   const fs::path out = folder_ / "recorded";
-  const auto record = test::safecell_cli({"luts", "record", "--cell", cell_.string(), "--out",
-                                          out.string(), "--key-stride", "6"});
+  const auto record = test::safecell_cli(
+      {"luts", "record", "--cell", cell_.string(), "--out", out.string(), "--key-stride", "6"});
   EXPECT_EQ(record.exit_code, 2);
   EXPECT_NE(record.err.find("cam0"), std::string::npos) << record.err;
   EXPECT_EQ(record.err.find("recording "), std::string::npos) << "recorded before refusing";

@@ -18,9 +18,8 @@ BoxAxes random_axes(std::mt19937_64& rng) {
   for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
     axes.joint[axis] = axis;
     axes.stride[axis] = stride;
-    axes.cells[axis] =
-        std::uniform_int_distribution<std::uint32_t>(2, axis == 0 ? 150 : (axes.count > 4 ? 4 : 9))(
-            rng);
+    axes.cells[axis] = std::uniform_int_distribution<std::uint32_t>(
+        2, axis == 0 ? 150 : (axes.count > 4 ? 4 : 9))(rng);
     stride *= axes.cells[axis];
   }
   return axes;
@@ -42,8 +41,8 @@ TEST(CellLines, PackedBoxesEqualTheBoxesSetRowByRow) {
       CellIndex start = 0;
       std::uint8_t extents[kMaxJoints]{};
       for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
-        const auto low = std::uniform_int_distribution<std::uint32_t>(0, axes.cells[axis] - 1)(
-            run.rng());
+        const auto low =
+            std::uniform_int_distribution<std::uint32_t>(0, axes.cells[axis] - 1)(run.rng());
         const auto extent = std::uniform_int_distribution<std::uint32_t>(
             1, std::min<std::uint32_t>(255, axes.cells[axis] - low))(run.rng());
         start += low * axes.stride[axis];

@@ -95,8 +95,8 @@ TEST_F(RecordedTables, KeysSpanTheGridAndCoarserKeysDilateMore) {
   const std::vector<double> last = recording_->configuration(recording_->key_count() - 1, 0);
   for (std::uint32_t j = 0; j < grid_->joint_count(); ++j) {
     const JointSpec& spec = grid_->joint(j);
-    const double expected =
-        spec.discretised ? spec.hi_rad - grid_->cell_width_rad(j) / 2.0 : (spec.lo_rad + spec.hi_rad) / 2.0;
+    const double expected = spec.discretised ? spec.hi_rad - grid_->cell_width_rad(j) / 2.0
+                                             : (spec.lo_rad + spec.hi_rad) / 2.0;
     EXPECT_NEAR(last[j], expected, 1e-9) << "joint " << j + 1;
   }
   RecordingOptions wrists;
@@ -115,8 +115,9 @@ TEST_F(RecordedTables, AbsurdOptionsAreRefused) {
   options.padding_m = -0.1;
   EXPECT_THROW(RecordedSilhouettes(*cell_, *grid_, options), std::invalid_argument);
   RecordedSilhouettes recording(*cell_, *grid_, quick_options(3));
-  EXPECT_THROW(recording.record([](const std::vector<double>&) { return std::vector<FeatureMask>(1); }),
-               std::runtime_error);
+  EXPECT_THROW(
+      recording.record([](const std::vector<double>&) { return std::vector<FeatureMask>(1); }),
+      std::runtime_error);
   EXPECT_FALSE(recording.recorded());
 }
 
@@ -212,7 +213,8 @@ TEST_F(RecordedTables, AgreeWithTheModelAndFlagAMiscalibratedCamera) {
   const PinholeCamera& nominal = cell_->cameras[1];
   const Eigen::Isometry3d turn(Eigen::AngleAxisd(3.0 * std::numbers::pi / 180.0,
                                                  Eigen::Vector3d(0.3, 1.0, 0.2).normalized()));
-  real.cameras[1] = PinholeCamera(nominal.name(), nominal.intrinsics(), turn * nominal.cell_to_camera());
+  real.cameras[1] =
+      PinholeCamera(nominal.name(), nominal.intrinsics(), turn * nominal.cell_to_camera());
   RecordedSilhouettes off(*cell_, *grid_, quick_options(4));
   record(off, real);
   const auto agreement = compare_with_model(*cell_, *grid_, off, model);

@@ -185,8 +185,7 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       "camera whose calibration is off (exit 1); the simulated cell stands in for the real "
       "robot and cameras");
   add_recording_options(check_command);
-  check_command->callback(
-      [&] { action = [&] { exit_code = run_luts_check(record, out, err); }; });
+  check_command->callback([&] { action = [&] { exit_code = run_luts_check(record, out, err); }; });
 
   ValidateOptions validate;
   CLI::App* validate_command = app.add_subcommand(

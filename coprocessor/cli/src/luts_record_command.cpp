@@ -94,8 +94,9 @@ void run_luts_record(const LutsRecordOptions& options, std::ostream& out, std::o
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   const char* const stages[kLutBuildStages] = {"LUT-1 from the recording", "LUT-2 inversion",
                                                "static obstacles"};
-  const LutSet set = build_recorded_luts(
-      cell, grid, *recording, 0, [&](int stage, double fraction) { bar.update(stages[stage], fraction); });
+  const LutSet set =
+      build_recorded_luts(cell, grid, *recording, 0,
+                          [&](int stage, double fraction) { bar.update(stages[stage], fraction); });
   bar.finish();
   const fs::path file = lut_cache_file(options.out_dir, set.fingerprint);
   fs::create_directories(options.out_dir);

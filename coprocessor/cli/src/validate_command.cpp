@@ -70,8 +70,8 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
         << " configurations against FCL ground truth (seed " << options.seed << ", "
         << options.removal << " robot removal)\n"
         << "  colliding " << grouped(report.colliding) << ", missed " << report.missed
-        << ", with a human or object fewer than " << cell.camera_threshold << " cameras saw " << report.unseen
-        << "\n"
+        << ", with a human or object fewer than " << cell.camera_threshold << " cameras saw "
+        << report.unseen << "\n"
         << "  false positives " << fixed(100.0 * report.false_positive_rate, 1)
         << " % of free configurations, forbidden " << fixed(100.0 * report.forbidden_share, 1)
         << " % of the grid on average, phantom cells " << fixed(report.phantom_cells, 0)

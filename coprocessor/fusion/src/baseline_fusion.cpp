@@ -71,8 +71,8 @@ const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observ
         const std::vector<std::uint64_t>& words = pixel_cells_.words();
         for (std::size_t word = 0; word < words.size(); ++word) {
           for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
-            count_cell(static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(
-                                                              std::countr_zero(bits))),
+            count_cell(static_cast<CellIndex>(word * 64 +
+                                              static_cast<std::size_t>(std::countr_zero(bits))),
                        stamp);
           }
         }

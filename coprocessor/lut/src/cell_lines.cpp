@@ -64,7 +64,8 @@ std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
 }
 
 bool CellLines::contains(const CellLines& other) const {
-  if (other.words_.size() != words_.size()) throw std::invalid_argument("cell sets of different grids");
+  if (other.words_.size() != words_.size())
+    throw std::invalid_argument("cell sets of different grids");
   std::uint64_t missing = 0;
   for (std::size_t i = 0; i < words_.size(); ++i) missing |= other.words_[i] & ~words_[i];
   return missing == 0;
@@ -119,7 +120,8 @@ void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents)
 }
 
 void CellLines::pack_into(CellSet& cells) const {
-  if (cells.cell_count() != cell_count_) throw std::invalid_argument("cell sets of different grids");
+  if (cells.cell_count() != cell_count_)
+    throw std::invalid_argument("cell sets of different grids");
   std::uint64_t* const out = cells.words().data();
   cells.clear();
   for (std::size_t line = 0; line < line_count_; ++line) {

@@ -77,8 +77,8 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
         build_pixel_to_cells_tables(cell_tables[camera], grid, pixel_build, inversion);
     const std::uint64_t pairs = cell_tables[camera].covered_pairs();
     set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), std::move(cell_tables[camera]),
-                                     std::move(pixel_tables.pixels),
-                                     std::move(pixel_tables.blocks), pairs});
+                                     std::move(pixel_tables.pixels), std::move(pixel_tables.blocks),
+                                     pairs});
   }
   ModelLutOptions model_options;
   model_options.threads = threads;

@@ -89,11 +89,10 @@ RecordedSilhouettes::RecordedSilhouettes(const CellModel& cell, const CspaceGrid
       continue;
     }
     const CameraIntrinsics& k = camera.intrinsics();
-    dilation_.push_back(
-        {dilation_cells(motion_bound_m_, nearest_m, k.fx_px, k.cx_px, k.width_px,
-                        cell.feature_grid.cell_width_px()),
-         dilation_cells(motion_bound_m_, nearest_m, k.fy_px, k.cy_px, k.height_px,
-                        cell.feature_grid.cell_height_px())});
+    dilation_.push_back({dilation_cells(motion_bound_m_, nearest_m, k.fx_px, k.cx_px, k.width_px,
+                                        cell.feature_grid.cell_width_px()),
+                         dilation_cells(motion_bound_m_, nearest_m, k.fy_px, k.cy_px, k.height_px,
+                                        cell.feature_grid.cell_height_px())});
     bounded_.push_back(true);
   }
 }

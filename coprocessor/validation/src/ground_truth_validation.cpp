@@ -25,9 +25,9 @@ PlacedShape random_object(double half_x, double half_y, std::mt19937_64& rng) {
   const Eigen::Vector3d size(side(rng), side(rng),
                              std::uniform_real_distribution<double>(0.2, 1.2)(rng));
   PlacedShape object{Box{size}, Eigen::Isometry3d::Identity()};
-  object.pose.translate(Eigen::Vector3d(std::uniform_real_distribution<double>(-half_x, half_x)(rng),
-                                        std::uniform_real_distribution<double>(-half_y, half_y)(rng),
-                                        size.z() / 2.0));
+  object.pose.translate(Eigen::Vector3d(
+      std::uniform_real_distribution<double>(-half_x, half_x)(rng),
+      std::uniform_real_distribution<double>(-half_y, half_y)(rng), size.z() / 2.0));
   object.pose.rotate(Eigen::AngleAxisd(
       std::uniform_real_distribution<double>(-std::numbers::pi, std::numbers::pi)(rng),
       Eigen::Vector3d::UnitZ()));
@@ -111,8 +111,7 @@ ValidationReport validate_against_ground_truth(
   double forbidden_share_sum = 0.0;
   std::mt19937_64 rng(options.seed);
   for (std::size_t s = 0; s < options.scenes; ++s) {
-    const SimScene scene =
-        random_scene(cell, grid, rng, options.max_humans, options.max_objects);
+    const SimScene scene = random_scene(cell, grid, rng, options.max_humans, options.max_objects);
     report.objects += scene.objects.size();
     const auto frames = sim.render(scene, 10 * s, 0.1 * static_cast<double>(s));
     const CellSet& forbidden = pipeline.process(frames, scene.q);

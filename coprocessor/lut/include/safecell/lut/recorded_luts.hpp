@@ -16,8 +16,7 @@
 
 namespace safecell {
 
-[[nodiscard]] std::uint64_t recorded_lut_fingerprint(const CellModel& cell,
-                                                     const CspaceGrid& grid,
+[[nodiscard]] std::uint64_t recorded_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
                                                      const RecordingOptions& options);
 
 // Throws std::invalid_argument naming the cameras too close for the recording's bound (its
@@ -28,8 +27,7 @@ void check_recording_bounded(const RecordedSilhouettes& recording);
 // Precondition: recording.recorded(). Throws std::invalid_argument naming the cameras when
 // some are too close for the recording's bound. Progress stages as build_model_luts().
 [[nodiscard]] LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
-                                         const RecordedSilhouettes& recording,
-                                         unsigned threads = 0,
+                                         const RecordedSilhouettes& recording, unsigned threads = 0,
                                          const StagedProgress& progress = {});
 
 }  // namespace safecell

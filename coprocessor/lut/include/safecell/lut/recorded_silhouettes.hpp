@@ -65,9 +65,7 @@ class RecordedSilhouettes final : public RobotSilhouettes {
   [[nodiscard]] std::size_t key_count() const { return key_count_; }
   [[nodiscard]] std::size_t wrist_combinations() const { return wrist_combinations_; }
   // Configurations recorded: key_count() * wrist_combinations().
-  [[nodiscard]] std::size_t configuration_count() const {
-    return key_count_ * wrist_combinations_;
-  }
+  [[nodiscard]] std::size_t configuration_count() const { return key_count_ * wrist_combinations_; }
   // The configuration of one key and one combination of wrist samples.
   [[nodiscard]] std::vector<double> configuration(std::size_t key, std::size_t wrist) const;
   // What the cameras saw at one key, undilated (precondition: recorded()).
@@ -104,9 +102,9 @@ class RecordedSilhouettes final : public RobotSilhouettes {
   std::size_t wrist_combinations_ = 1;
   double motion_bound_m_ = 0.0;
   std::vector<std::array<int, 2>> dilation_;  // per camera: columns, rows
-  std::vector<bool> bounded_;  // per camera
+  std::vector<bool> bounded_;                 // per camera
   std::vector<std::string> unbounded_;
-  std::vector<FeatureMask> masks_;            // key-major, camera-minor
+  std::vector<FeatureMask> masks_;  // key-major, camera-minor
 };
 
 }  // namespace safecell
