@@ -13,6 +13,7 @@
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/ground_truth.hpp"
 #include "safecell/test/property.hpp"
+#include "silhouette_check.hpp"
 
 namespace safecell {
 namespace {
@@ -72,26 +73,7 @@ TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {
 }
 
 TEST_F(ModelLuts, SilhouetteHoldsTheRenderedRobot) {
-  test::PropertyRun run(40);
-  SimulatedCell sim = simulate_cell(*cell_, SensorSettings{});
-  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
-  const FeatureGrid& features = cell_->feature_grid;
-  for (int i = 0; i < run.iterations(); ++i) {
-    const CellIndex cell = any_cell(run.rng());
-    const auto q = test::configuration_in(*grid_, cell, run.rng());
-    for (std::size_t camera = 0; camera < sim.camera_count(); ++camera) {
-      FeatureMask silhouette(features);
-      silhouettes_->add_silhouette(cell, camera, silhouette);
-      const cv::Mat covered = sim.robot_coverage(camera, q);
-      for (int y = 0; y < covered.rows; ++y) {
-        for (int x = 0; x < covered.cols; ++x) {
-          if (covered.at<std::uint8_t>(y, x) == 0) continue;
-          ASSERT_TRUE(silhouette.test(x / features.cell_width_px(), y / features.cell_height_px()))
-              << "camera " << camera << " pixel " << x << "," << y << " cell " << cell;
-        }
-      }
-    }
-  }
+  test::expect_silhouettes_hold_rendered_robot(*cell_, *grid_, *silhouettes_, 40);
 }
 
 TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {

@@ -1,8 +1,6 @@
 #include "safecell/lut/model_luts.hpp"
 
 #include "safecell/base/fnv1a.hpp"
-#include "safecell/lut/cell_table_builder.hpp"
-#include "safecell/lut/pixel_table_builder.hpp"
 #include "safecell/lut/static_obstacle_cells.hpp"
 
 namespace safecell {
@@ -75,49 +73,22 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
 LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
                         const ModelLutOptions& options, const StagedProgress& progress) {
   const ModelSilhouettes silhouettes(cell, grid, options);
-  const auto stage = [&progress](int index) -> ProgressCallback {
-    if (!progress) return {};
-    return [&progress, index](double fraction) { progress(index, fraction); };
-  };
-
-  CellTableBuild table_build;
-  table_build.cell_count = grid.cell_count();
-  table_build.camera_count = cell.cameras.size();
-  table_build.columns = cell.feature_grid.columns();
-  table_build.rows = cell.feature_grid.rows();
-  table_build.threads = options.threads;
-  auto cell_tables = build_cell_to_pixels_tables(
-      table_build,
+  std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
+      cell, grid,
       [&silhouettes](CellIndex cell_index, std::vector<FeatureMask>& masks) {
         silhouettes.add_silhouettes(cell_index, masks);
       },
-      stage(0));
-
+      options.threads, progress);
   LutSet set;
   set.fingerprint = model_lut_fingerprint(cell, grid, options);
   set.grid_fingerprint = grid.fingerprint();
   set.source = LutSource::kModel;
-  set.columns = table_build.columns;
-  set.rows = table_build.rows;
-  PixelTableBuild pixel_build;
-  pixel_build.threads = options.threads;
-  for (std::size_t camera = 0; camera < cell.cameras.size(); ++camera) {
-    const ProgressCallback inversion = [&, camera](double fraction) {
-      if (progress) {
-        progress(
-            1, (static_cast<double>(camera) + fraction) / static_cast<double>(cell.cameras.size()));
-      }
-    };
-    PixelTables pixel_tables =
-        build_pixel_to_cells_tables(cell_tables[camera], grid, pixel_build, inversion);
-    const std::uint64_t pairs = cell_tables[camera].covered_pairs();
-    cell_tables[camera] = CellToPixelsTable{};  // computed from the model when needed
-    set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), CellToPixelsTable{},
-                                     std::move(pixel_tables.pixels), std::move(pixel_tables.blocks),
-                                     pairs});
-  }
-  set.static_cells =
-      static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads, stage(2));
+  set.columns = cell.feature_grid.columns();
+  set.rows = cell.feature_grid.rows();
+  set.cameras =
+      invert_cell_tables(cell, grid, std::move(cell_tables), false, options.threads, progress);
+  set.static_cells = static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads,
+                                           stage_progress(progress, 2));
   return set;
 }
 

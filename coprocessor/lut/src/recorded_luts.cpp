@@ -4,8 +4,7 @@
 #include <string>
 
 #include "safecell/base/fnv1a.hpp"
-#include "safecell/lut/cell_table_builder.hpp"
-#include "safecell/lut/pixel_table_builder.hpp"
+#include "safecell/lut/lut_build_stages.hpp"
 #include "safecell/lut/static_obstacle_cells.hpp"
 
 namespace safecell {
@@ -39,51 +38,26 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
                            const StagedProgress& progress) {
   if (!recording.recorded()) throw std::invalid_argument("recorded tables need a recording");
   check_recording_bounded(recording);
-  const auto stage = [&progress](int index) -> ProgressCallback {
-    if (!progress) return {};
-    return [&progress, index](double fraction) { progress(index, fraction); };
-  };
-  CellTableBuild table_build;
-  table_build.cell_count = grid.cell_count();
-  table_build.camera_count = cell.cameras.size();
-  table_build.columns = cell.feature_grid.columns();
-  table_build.rows = cell.feature_grid.rows();
-  table_build.threads = threads;
-  std::vector<CellToPixelsTable> cell_tables = build_cell_to_pixels_tables(
-      table_build,
+  std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
+      cell, grid,
       [&recording](CellIndex cell_index, std::vector<FeatureMask>& masks) {
         for (std::size_t camera = 0; camera < masks.size(); ++camera) {
           recording.add_silhouette(cell_index, camera, masks[camera]);
         }
       },
-      stage(0));
-
+      threads, progress);
   LutSet set;
   set.fingerprint = recorded_lut_fingerprint(cell, grid, recording.options());
   set.grid_fingerprint = grid.fingerprint();
   set.source = LutSource::kRecorded;
-  set.columns = table_build.columns;
-  set.rows = table_build.rows;
-  PixelTableBuild pixel_build;
-  pixel_build.threads = threads;
-  for (std::size_t camera = 0; camera < cell.cameras.size(); ++camera) {
-    const ProgressCallback inversion = [&, camera](double fraction) {
-      if (progress) {
-        progress(
-            1, (static_cast<double>(camera) + fraction) / static_cast<double>(cell.cameras.size()));
-      }
-    };
-    PixelTables pixel_tables =
-        build_pixel_to_cells_tables(cell_tables[camera], grid, pixel_build, inversion);
-    const std::uint64_t pairs = cell_tables[camera].covered_pairs();
-    set.cameras.push_back(CameraLuts{cell.cameras[camera].name(), std::move(cell_tables[camera]),
-                                     std::move(pixel_tables.pixels), std::move(pixel_tables.blocks),
-                                     pairs});
-  }
+  set.columns = cell.feature_grid.columns();
+  set.rows = cell.feature_grid.rows();
+  set.cameras = invert_cell_tables(cell, grid, std::move(cell_tables), true, threads, progress);
   ModelLutOptions model_options;
   model_options.threads = threads;
   const ModelSilhouettes model(cell, grid, model_options);
-  set.static_cells = static_obstacle_cells(model.envelope(), cell.obstacles, threads, stage(2));
+  set.static_cells =
+      static_obstacle_cells(model.envelope(), cell.obstacles, threads, stage_progress(progress, 2));
   return set;
 }
 

@@ -7,19 +7,13 @@
 // A model-mode set keeps no LUT-1 table: robot removal computes the one row it needs per cycle
 // from the model (ModelSilhouettes), exactly as the build did; the fingerprint ties the two.
 
-#include <functional>
-
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/lut/lut_build_stages.hpp"
 #include "safecell/lut/lut_set.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 
 namespace safecell {
-
-// The stages of a build, for a progress bar: stage 0 silhouettes (LUT-1), 1 inversion (LUT-2),
-// 2 static obstacles.
-inline constexpr int kLutBuildStages = 3;
-using StagedProgress = std::function<void(int stage, double fraction_done)>;
 
 // The fingerprint the set would carry (see LutSet::fingerprint).
 [[nodiscard]] std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
