@@ -42,12 +42,28 @@ CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
     throw std::invalid_argument("cell lines: the grid has no joint-0 lines");
   }
   line_cells_ = axes.cells[0];
+  inverse_line_cells_ = 1.0 / static_cast<double>(line_cells_);
   words_per_line_ = (line_cells_ + 63) / 64;
   line_count_ = cell_count / line_cells_;
   for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
     line_stride_[axis] = axes.stride[axis] / line_cells_;
   }
   words_.assign(line_count_ * words_per_line_, 0);
+}
+
+CellLines::LinePlace CellLines::place_of(CellIndex cell) const {
+  // A multiplication instead of a division (this runs once per box): the quotient from the
+  // floating-point reciprocal is off by at most one, which the remainder shows.
+  auto line = static_cast<std::int64_t>(static_cast<double>(cell) * inverse_line_cells_);
+  std::int64_t within = static_cast<std::int64_t>(cell) - line * line_cells_;
+  if (within < 0) {
+    --line;
+    within += line_cells_;
+  } else if (within >= line_cells_) {
+    ++line;
+    within -= line_cells_;
+  }
+  return {static_cast<std::size_t>(line), static_cast<std::uint32_t>(within)};
 }
 
 void CellLines::clear() { std::fill(words_.begin(), words_.end(), 0); }
@@ -72,8 +88,9 @@ bool CellLines::contains(const CellLines& other) const {
 }
 
 void CellLines::add_box_one_word_lines(CellIndex start, const std::uint8_t* extents) {
-  const std::uint64_t mask = bit_run(start % line_cells_, extents[0]);
-  const std::size_t first_line = start / line_cells_;
+  const LinePlace place = place_of(start);
+  const std::uint64_t mask = bit_run(place.cell, extents[0]);
+  const std::size_t first_line = place.line;
   std::uint64_t* const words = words_.data();
   if (axes_.count <= 4) {
     // The common grid (joints 1-4 discretised): three plain loops, the innermost over
@@ -101,7 +118,8 @@ void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents)
   std::uint32_t word_in_line[5]{};
   std::uint64_t masks[5]{};
   std::uint32_t parts = 0;
-  for (std::uint32_t cell = start % line_cells_, left = extents[0]; left > 0; ++parts) {
+  const LinePlace place = place_of(start);
+  for (std::uint32_t cell = place.cell, left = extents[0]; left > 0; ++parts) {
     const std::uint32_t count = std::min(left, 64 - cell % 64);
     word_in_line[parts] = cell / 64;
     masks[parts] = bit_run(cell % 64, count);
@@ -110,7 +128,7 @@ void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents)
   }
   const std::uint32_t run = axes_.count > 1 ? extents[1] : 1;
   std::uint64_t* const words = words_.data();
-  for_each_line_run(axes_.count, line_stride_, start / line_cells_, extents,
+  for_each_line_run(axes_.count, line_stride_, place.line, extents,
                     [&](std::size_t first_line) {
                       for (std::uint32_t i = 0; i < run; ++i) {
                         std::uint64_t* line = words + (first_line + i) * words_per_line_;

@@ -6,6 +6,11 @@
 namespace safecell {
 namespace {
 
+// How the tables are cut into boxes and blocks: tables of another version decode to the same cells
+// but may be slower to fuse, so a cached file of another version is built again. 2: boxes cover
+// (may overlap) instead of partitioning.
+constexpr std::uint32_t kTableCutVersion = 2;
+
 void add_pose(Fnv1a64& hash, const Eigen::Isometry3d& pose) {
   for (int row = 0; row < 3; ++row) {
     for (int column = 0; column < 4; ++column) hash.add_double(pose.matrix()(row, column));
@@ -29,6 +34,7 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
   check_model_lut_options(cell, options);
   Fnv1a64 hash;
   hash.add_u64(grid.fingerprint());
+  hash.add_u32(kTableCutVersion);
   hash.add_double(options.ball_radius_m);
   hash.add_double(options.padding_m);
   const RobotModel& robot = *cell.robot;

@@ -33,12 +33,18 @@ class CellLines {
   [[nodiscard]] std::size_t line_count() const { return line_count_; }
 
  private:
+  struct LinePlace {
+    std::size_t line = 0;
+    std::uint32_t cell = 0;  // along joint 0
+  };
+  [[nodiscard]] LinePlace place_of(CellIndex cell) const;
   void add_box_one_word_lines(CellIndex start, const std::uint8_t* extents);
   void add_box_long_lines(CellIndex start, const std::uint8_t* extents);
 
   BoxAxes axes_;
   std::uint32_t cell_count_ = 0;
   std::uint32_t line_cells_ = 1;      // cells along joint 0
+  double inverse_line_cells_ = 1.0;
   std::uint32_t words_per_line_ = 1;  // ceil(line_cells_ / 64)
   std::size_t line_count_ = 0;
   // Lines between neighbours along each box axis (axis 0 unused).
