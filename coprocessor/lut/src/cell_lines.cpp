@@ -128,13 +128,12 @@ void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents)
   }
   const std::uint32_t run = axes_.count > 1 ? extents[1] : 1;
   std::uint64_t* const words = words_.data();
-  for_each_line_run(axes_.count, line_stride_, place.line, extents,
-                    [&](std::size_t first_line) {
-                      for (std::uint32_t i = 0; i < run; ++i) {
-                        std::uint64_t* line = words + (first_line + i) * words_per_line_;
-                        for (std::uint32_t p = 0; p < parts; ++p) line[word_in_line[p]] |= masks[p];
-                      }
-                    });
+  for_each_line_run(axes_.count, line_stride_, place.line, extents, [&](std::size_t first_line) {
+    for (std::uint32_t i = 0; i < run; ++i) {
+      std::uint64_t* line = words + (first_line + i) * words_per_line_;
+      for (std::uint32_t p = 0; p < parts; ++p) line[word_in_line[p]] |= masks[p];
+    }
+  });
 }
 
 void CellLines::pack_into(CellSet& cells) const {

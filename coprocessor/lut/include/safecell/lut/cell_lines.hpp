@@ -43,7 +43,7 @@ class CellLines {
 
   BoxAxes axes_;
   std::uint32_t cell_count_ = 0;
-  std::uint32_t line_cells_ = 1;      // cells along joint 0
+  std::uint32_t line_cells_ = 1;  // cells along joint 0
   double inverse_line_cells_ = 1.0;
   std::uint32_t words_per_line_ = 1;  // ceil(line_cells_ / 64)
   std::size_t line_count_ = 0;
