@@ -12,8 +12,10 @@ constexpr std::uint8_t kCeilingAlbedo = 200;
 
 // A fixed pseudo-random brightness per tile, the same on every run.
 std::uint8_t tile_albedo(int i, int j, int salt, int base, int spread) {
-  auto hash = static_cast<std::uint32_t>(i * 73856093) ^ static_cast<std::uint32_t>(j * 19349663) ^
-              static_cast<std::uint32_t>(salt * 83492791);
+  // Unsigned arithmetic: the products wrap by definition (signed ones would overflow).
+  auto hash = static_cast<std::uint32_t>(i) * 73856093u ^
+              static_cast<std::uint32_t>(j) * 19349663u ^
+              static_cast<std::uint32_t>(salt) * 83492791u;
   hash ^= hash >> 13;
   hash *= 0x5bd1e995u;
   hash ^= hash >> 15;
