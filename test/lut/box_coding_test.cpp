@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "safecell/lut/pixel_table_builder.hpp"
+#include "safecell/lut/box_cover.hpp"
 #include "safecell/lut/pixel_to_cells_table.hpp"
 #include "safecell/test/property.hpp"
 
@@ -89,6 +89,38 @@ TEST(BoxCoding, LongRunsAreCutAt255Cells) {
   EXPECT_EQ(boxes, 2U);  // 255 + 45 along joint 0, each 100 deep along joint 1
   const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
   EXPECT_EQ(decoded(table), cells);
+}
+
+TEST(BoxCoding, ASetIndependentOfTheTrailingJointsIsCutIntoBoxesSpanningThemWhole) {
+  GridSpec spec;
+  spec.m_max_m = 0.1;
+  spec.joint_count = 3;
+  spec.joints[0] = JointSpec{0.0, 1.0, 1.0, true};  // 10 cells
+  spec.joints[1] = JointSpec{0.0, 1.0, 1.0, true};  // 10 cells
+  spec.joints[2] = JointSpec{0.0, 0.6, 1.0, true};  // 6 cells
+  const CspaceGrid grid = CspaceGrid::create(spec).value();
+  const BoxAxes axes = BoxAxes::of(grid);
+  // A disc over joints 0 and 1, the same at every joint-2 cell, plus one cell of its own.
+  CellSet cells(grid.cell_count());
+  for (CellIndex c = 0; c < grid.cell_count(); ++c) {
+    const GridCoords at = grid.coords_of(c).value();
+    const int dx = static_cast<int>(at.along[0]) - 4;
+    const int dy = static_cast<int>(at.along[1]) - 5;
+    if (dx * dx + dy * dy <= 9) cells.set(c);
+  }
+  cells.set(99 + 100 * 3);  // joint 0 and 1 at their last cell, joint 2 at 3
+  std::vector<std::uint8_t> bytes;
+  append_boxes(cells, axes, bytes);
+  const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
+  EXPECT_EQ(decoded(table), cells);
+  std::size_t whole = 0;
+  std::size_t single = 0;
+  table.for_each_box(0, [&](CellIndex start, const std::uint8_t* extents) {
+    if (extents[2] == 6) ++whole;
+    if (start == 399 && extents[0] == 1 && extents[1] == 1 && extents[2] == 1) ++single;
+  });
+  EXPECT_EQ(whole + single, table.total_boxes()) << "every disc box spans joint 2 whole";
+  EXPECT_EQ(single, 1U);
 }
 
 TEST(BoxCoding, MalformedTablesAreRefused) {

@@ -75,11 +75,39 @@ TEST(CellLines, ContainsIsTheSubsetRelation) {
   const std::uint8_t small_box[] = {5, 2};
   const std::uint8_t large_box[] = {30, 3};
   small.add_box(66, small_box);  // cells 66..70 of lines 0 and 1: across the word boundary
-  EXPECT_TRUE(small.contains(CellLines(axes, 280)));
+  CellLines empty(axes, 280);
+  EXPECT_TRUE(small.contains(empty));
   EXPECT_FALSE(large.contains(small));
   EXPECT_EQ(large.add_box(50, large_box), 3U);
   EXPECT_TRUE(large.contains(small));
   EXPECT_FALSE(small.contains(large));
+}
+
+TEST(CellLines, ABoxSpanningTheTrailingAxesWholeCostsItsLeadingLines) {
+  BoxAxes axes;
+  axes.count = 3;
+  axes.stride[0] = 1;
+  axes.cells[0] = 10;
+  axes.stride[1] = 10;
+  axes.cells[1] = 6;
+  axes.stride[2] = 60;
+  axes.cells[2] = 7;
+  CellLines lines(axes, 420);
+  const std::uint8_t whole_along_axis_2[] = {3, 2, 7};
+  const std::uint8_t whole_along_axes_1_and_2[] = {2, 6, 7};
+  EXPECT_EQ(lines.add_box(14, whole_along_axis_2), 2U);       // lines 1 and 2 of level 2
+  EXPECT_EQ(lines.add_box(7, whole_along_axes_1_and_2), 1U);  // the one line of level 1
+  CellSet oracle(420);
+  for_each_box_row(axes, 14, whole_along_axis_2, [&](CellIndex first, std::uint32_t run) {
+    oracle.set_range(first, first + run);
+  });
+  for_each_box_row(axes, 7, whole_along_axes_1_and_2, [&](CellIndex first, std::uint32_t run) {
+    oracle.set_range(first, first + run);
+  });
+  CellSet packed(420);
+  lines.pack_into(packed);
+  EXPECT_EQ(packed, oracle);
+  EXPECT_EQ(packed.count(), 3U * 2U * 7U + 2U * 6U * 7U);
 }
 
 TEST(CellLines, OneWordPerLineUpTo64CellsAlongJointZero) {

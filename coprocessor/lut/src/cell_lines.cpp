@@ -44,11 +44,17 @@ CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
   line_cells_ = axes.cells[0];
   inverse_line_cells_ = 1.0 / static_cast<double>(line_cells_);
   words_per_line_ = (line_cells_ + 63) / 64;
-  line_count_ = cell_count / line_cells_;
   for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
     line_stride_[axis] = axes.stride[axis] / line_cells_;
   }
-  words_.assign(line_count_ * words_per_line_, 0);
+  std::size_t words = 0;
+  for (std::uint32_t level = 1; level <= axes.count; ++level) {
+    level_lines_[level] = level < axes.count ? line_stride_[level] : cell_count / line_cells_;
+    level_word_[level] = words;
+    words += level_lines_[level] * words_per_line_;
+  }
+  words_.assign(words, 0);
+  lowest_written_ = axes.count;
 }
 
 CellLines::LinePlace CellLines::place_of(CellIndex cell) const {
@@ -66,40 +72,65 @@ CellLines::LinePlace CellLines::place_of(CellIndex cell) const {
   return {static_cast<std::size_t>(line), static_cast<std::uint32_t>(within)};
 }
 
-void CellLines::clear() { std::fill(words_.begin(), words_.end(), 0); }
-
-std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
-  if (words_per_line_ == 1) {
-    add_box_one_word_lines(start, extents);
-  } else {
-    add_box_long_lines(start, extents);
-  }
-  std::size_t lines = 1;
-  for (std::uint32_t axis = 1; axis < axes_.count; ++axis) lines *= extents[axis];
-  return lines;
+void CellLines::clear() {
+  std::fill(words_.begin(), words_.end(), 0);
+  lowest_written_ = axes_.count;
 }
 
-bool CellLines::contains(const CellLines& other) const {
+std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
+  // The level: the box's axes up to the first of the trailing ones it spans whole. Its lowest
+  // cell lies on coordinate 0 of those, so its line index is the same in the level's lines.
+  std::uint32_t axes = axes_.count;
+  while (axes > 1 && extents[axes - 1] == axes_.cells[axes - 1]) --axes;
+  std::uint64_t* const lines = words_.data() + level_word_[axes];
+  if (words_per_line_ == 1) {
+    add_one_word_lines(lines, start, extents, axes);
+  } else {
+    add_long_lines(lines, start, extents, axes);
+  }
+  lowest_written_ = std::min(lowest_written_, axes);
+  std::size_t written = 1;
+  for (std::uint32_t axis = 1; axis < axes; ++axis) written *= extents[axis];
+  return written;
+}
+
+void CellLines::fold_levels() {
+  for (std::uint32_t level = lowest_written_; level < axes_.count; ++level) {
+    std::uint64_t* const low = words_.data() + level_word_[level];
+    std::uint64_t* up = words_.data() + level_word_[level + 1];
+    const std::size_t words = level_lines_[level] * words_per_line_;
+    for (std::uint32_t copy = 0; copy < axes_.cells[level]; ++copy, up += words) {
+      for (std::size_t w = 0; w < words; ++w) up[w] |= low[w];
+    }
+    std::fill(low, low + words, 0);
+  }
+  lowest_written_ = axes_.count;
+}
+
+bool CellLines::contains(CellLines& other) {
   if (other.words_.size() != words_.size())
     throw std::invalid_argument("cell sets of different grids");
+  fold_levels();
+  other.fold_levels();
   std::uint64_t missing = 0;
-  for (std::size_t i = 0; i < words_.size(); ++i) missing |= other.words_[i] & ~words_[i];
+  for (std::size_t i = level_word_[axes_.count]; i < words_.size(); ++i) {
+    missing |= other.words_[i] & ~words_[i];
+  }
   return missing == 0;
 }
 
-void CellLines::add_box_one_word_lines(CellIndex start, const std::uint8_t* extents) {
+void CellLines::add_one_word_lines(std::uint64_t* const lines, CellIndex start,
+                                   const std::uint8_t* extents, std::uint32_t axes) {
   const LinePlace place = place_of(start);
   const std::uint64_t mask = bit_run(place.cell, extents[0]);
-  const std::size_t first_line = place.line;
-  std::uint64_t* const words = words_.data();
-  if (axes_.count <= 4) {
+  if (axes <= 4) {
     // The common grid (joints 1-4 discretised): three plain loops, the innermost over
     // neighbouring words.
-    const std::uint32_t run = axes_.count > 1 ? extents[1] : 1;
-    const std::uint32_t planes = axes_.count > 2 ? extents[2] : 1;
-    const std::uint32_t volumes = axes_.count > 3 ? extents[3] : 1;
+    const std::uint32_t run = axes > 1 ? extents[1] : 1;
+    const std::uint32_t planes = axes > 2 ? extents[2] : 1;
+    const std::uint32_t volumes = axes > 3 ? extents[3] : 1;
     for (std::uint32_t k3 = 0; k3 < volumes; ++k3) {
-      std::uint64_t* plane = words + first_line + k3 * line_stride_[3];
+      std::uint64_t* plane = lines + place.line + k3 * line_stride_[3];
       for (std::uint32_t k2 = 0; k2 < planes; ++k2, plane += line_stride_[2]) {
         for (std::uint32_t k1 = 0; k1 < run; ++k1) plane[k1] |= mask;
       }
@@ -107,13 +138,14 @@ void CellLines::add_box_one_word_lines(CellIndex start, const std::uint8_t* exte
     return;
   }
   const std::uint32_t run = extents[1];
-  for_each_line_run(axes_.count, line_stride_, first_line, extents, [&](std::size_t line_index) {
-    std::uint64_t* line = words + line_index;
+  for_each_line_run(axes, line_stride_, place.line, extents, [&](std::size_t line_index) {
+    std::uint64_t* line = lines + line_index;
     for (std::uint32_t i = 0; i < run; ++i) line[i] |= mask;
   });
 }
 
-void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents) {
+void CellLines::add_long_lines(std::uint64_t* const lines, CellIndex start,
+                               const std::uint8_t* extents, std::uint32_t axes) {
   // The masks of the row inside a line: at most ceil(255 / 64) + 1 words.
   std::uint32_t word_in_line[5]{};
   std::uint64_t masks[5]{};
@@ -126,23 +158,24 @@ void CellLines::add_box_long_lines(CellIndex start, const std::uint8_t* extents)
     cell += count;
     left -= count;
   }
-  const std::uint32_t run = axes_.count > 1 ? extents[1] : 1;
-  std::uint64_t* const words = words_.data();
-  for_each_line_run(axes_.count, line_stride_, place.line, extents, [&](std::size_t first_line) {
+  const std::uint32_t run = axes > 1 ? extents[1] : 1;
+  for_each_line_run(axes, line_stride_, place.line, extents, [&](std::size_t first_line) {
     for (std::uint32_t i = 0; i < run; ++i) {
-      std::uint64_t* line = words + (first_line + i) * words_per_line_;
+      std::uint64_t* line = lines + (first_line + i) * words_per_line_;
       for (std::uint32_t p = 0; p < parts; ++p) line[word_in_line[p]] |= masks[p];
     }
   });
 }
 
-void CellLines::pack_into(CellSet& cells) const {
+void CellLines::pack_into(CellSet& cells) {
   if (cells.cell_count() != cell_count_)
     throw std::invalid_argument("cell sets of different grids");
+  fold_levels();
   std::uint64_t* const out = cells.words().data();
+  const std::uint64_t* const full = words_.data() + level_word_[axes_.count];
   cells.clear();
-  for (std::size_t line = 0; line < line_count_; ++line) {
-    const std::uint64_t* in = words_.data() + line * words_per_line_;
+  for (std::size_t line = 0; line < line_count(); ++line) {
+    const std::uint64_t* in = full + line * words_per_line_;
     std::size_t at = line * line_cells_;
     for (std::uint32_t word = 0, left = line_cells_; left > 0; ++word) {
       const std::uint32_t count = std::min<std::uint32_t>(left, 64);

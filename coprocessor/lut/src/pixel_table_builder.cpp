@@ -4,75 +4,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/lut/box_cover.hpp"
+
 namespace safecell {
-namespace {
-
-constexpr std::uint32_t kMaxExtent = 255;  // one byte per extent
-
-// Whether every row of the box (start, extents) lies in `cells`.
-bool box_inside(const CellSet& cells, const BoxAxes& axes, CellIndex start,
-                const std::uint32_t* extents) {
-  bool inside = true;
-  for_each_box_row(axes, start, extents, [&](CellIndex first, std::uint32_t run) {
-    inside = inside && cells.all_in_range(first, first + run);
-  });
-  return inside;
-}
-
-}  // namespace
-
-std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
-                         std::vector<std::uint8_t>& box_bytes) {
-  CellSet uncovered = cells;
-  CellSet covered(cells.cell_count());
-  std::size_t boxes = 0;
-  CellIndex previous_start = 0;
-  for (CellIndex seed = uncovered.next_set(0); seed < uncovered.cell_count();
-       seed = uncovered.next_set(seed)) {
-    std::uint32_t coord[kMaxJoints]{};
-    for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
-      coord[axis] = seed / axes.stride[axis] % axes.cells[axis];
-    }
-    // The whole run of the set's cells along joint 0 around the seed, covered or not: fusion
-    // pays per line of a box, not per cell, so a wider run costs nothing.
-    CellIndex start = seed;
-    std::uint32_t extents[kMaxJoints]{};
-    for (std::uint32_t axis = 0; axis < axes.count; ++axis) extents[axis] = 1;
-    // Forwards first, so that a run longer than one box still advances past the seed.
-    while (coord[0] + extents[0] < axes.cells[0] && extents[0] < kMaxExtent &&
-           cells.test(start + extents[0])) {
-      ++extents[0];
-    }
-    while (coord[0] > 0 && extents[0] < kMaxExtent && cells.test(start - 1)) {
-      --start;
-      --coord[0];
-      ++extents[0];
-    }
-    for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
-      while (coord[axis] + extents[axis] < axes.cells[axis] && extents[axis] < kMaxExtent) {
-        // The next layer along this axis: the box so far, moved by `extents[axis]` steps.
-        std::uint32_t layer[kMaxJoints]{};
-        std::copy(extents, extents + axes.count, layer);
-        layer[axis] = 1;
-        const CellIndex layer_start = start + extents[axis] * axes.stride[axis];
-        if (!box_inside(cells, axes, layer_start, layer) ||
-            box_inside(covered, axes, layer_start, layer)) {
-          break;
-        }
-        ++extents[axis];
-      }
-    }
-    for_each_box_row(axes, start, extents, [&](CellIndex first, std::uint32_t run) {
-      uncovered.reset_range(first, first + run);
-      covered.set_range(first, first + run);
-    });
-    PixelToCellsTable::append_box(box_bytes, previous_start, start, extents, axes.count);
-    previous_start = start;
-    ++boxes;
-  }
-  return boxes;
-}
-
 namespace {
 
 // One level of the pyramid as it is built: boxes of its blocks in row-major block order.

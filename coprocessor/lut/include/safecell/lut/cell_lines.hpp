@@ -3,8 +3,13 @@
 // joint-0 cells at fixed other joints) starts on a word of its own. A box of cells
 // (box_rows.hpp) then sets the same bit mask in each of its lines, and its lines along box axis 1
 // are neighbouring words, so fusion fills a box with a few vector operations per run of lines
-// instead of a shifted range per row. CellSet (the compact layout every other part uses) is
-// obtained with pack_into().
+// instead of a shifted range per row.
+//
+// A box that spans the whole range of the trailing box axes (box_cover.hpp makes many) goes into
+// a level of its own: level d holds lines over the first d axes only, so such a box costs the
+// lines of its leading axes. The levels are folded into the full grid (each line copied along the
+// axes it spans whole) before the set is read: by contains() and pack_into(), which is why those
+// are not const. CellSet (the compact layout every other part uses) is obtained with pack_into().
 
 #include <cstdint>
 #include <vector>
@@ -22,15 +27,16 @@ class CellLines {
   void clear();
   // ORs the box with lowest cell `start` and one extent per box axis (precondition: the box lies
   // in the grid, as PixelToCellsTable checks when it is made).
-  // Returns the number of lines the box spans (its cost).
+  // Returns the number of lines written (its cost).
   std::size_t add_box(CellIndex start, const std::uint8_t* extents);
   // Whether every cell of `other` (of the same grid) is in this set.
-  [[nodiscard]] bool contains(const CellLines& other) const;
+  [[nodiscard]] bool contains(CellLines& other);
   // Writes the set into `cells` (of the same grid) in the compact layout.
-  void pack_into(CellSet& cells) const;
+  void pack_into(CellSet& cells);
 
   [[nodiscard]] std::uint32_t words_per_line() const { return words_per_line_; }
-  [[nodiscard]] std::size_t line_count() const { return line_count_; }
+  // Lines of the full grid.
+  [[nodiscard]] std::size_t line_count() const { return level_lines_[axes_.count]; }
 
  private:
   struct LinePlace {
@@ -38,17 +44,26 @@ class CellLines {
     std::uint32_t cell = 0;  // along joint 0
   };
   [[nodiscard]] LinePlace place_of(CellIndex cell) const;
-  void add_box_one_word_lines(CellIndex start, const std::uint8_t* extents);
-  void add_box_long_lines(CellIndex start, const std::uint8_t* extents);
+  // Folds levels lowest_written_.. into the full grid.
+  void fold_levels();
+  void add_one_word_lines(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
+                          std::uint32_t axes);
+  void add_long_lines(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
+                      std::uint32_t axes);
 
   BoxAxes axes_;
   std::uint32_t cell_count_ = 0;
   std::uint32_t line_cells_ = 1;  // cells along joint 0
   double inverse_line_cells_ = 1.0;
   std::uint32_t words_per_line_ = 1;  // ceil(line_cells_ / 64)
-  std::size_t line_count_ = 0;
   // Lines between neighbours along each box axis (axis 0 unused).
   std::size_t line_stride_[kMaxJoints]{};
+  // Level d (1..axes.count) has level_lines_[d] lines from word level_word_[d] of words_;
+  // level axes.count is the full grid.
+  std::size_t level_lines_[kMaxJoints + 1]{};
+  std::size_t level_word_[kMaxJoints + 1]{};
+  // The lowest level written since the last fold (axes.count: none below the full grid).
+  std::uint32_t lowest_written_ = 0;
   std::vector<std::uint64_t> words_;
 };
 

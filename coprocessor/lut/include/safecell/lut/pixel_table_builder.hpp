@@ -2,9 +2,7 @@
 // Builds LUT-2 from LUT-1 (paper §4.1): for every feature cell, the C-space cells whose
 // silhouette holds it, as boxes. The cells of a band of feature rows are gathered as one bitset
 // per pixel (the band is sized to a memory budget, so a finer grid streams instead of holding
-// everything), then each pixel's bitset is cut into boxes greedily: a box grows from its lowest
-// cell along joint 0, then along each further axis while the whole new layer is in the set.
-// Boxes do not overlap.
+// everything), then each pixel's bitset is cut into boxes (box_cover.hpp).
 //
 // The pyramid: besides every pixel's cells, every block of 2 x 2, 4 x 4, ... pixels (aligned to
 // multiples of its size) gets the union of its pixels' cells. Fusion adds a whole block where all
@@ -38,10 +36,5 @@ struct PixelTables {
                                                       const CspaceGrid& grid,
                                                       const PixelTableBuild& build = {},
                                                       const ProgressCallback& progress = {});
-
-// The boxes of one set of cells, appended to `box_bytes` (the coding of PixelToCellsTable).
-// Returns the number of boxes. Exposed for tests.
-std::size_t append_boxes(const CellSet& cells, const BoxAxes& axes,
-                         std::vector<std::uint8_t>& box_bytes);
 
 }  // namespace safecell
