@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "safecell/fusion/forbidden_map_fusion.hpp"
@@ -21,12 +23,14 @@ TEST(CountAtLeast, AgreesWithCountingCellByCell) {
         if (std::bernoulli_distribution(density)(run.rng())) set.set(c);
       }
     }
-    std::vector<const CellSet*> pointers;
-    for (const auto& set : sets) pointers.push_back(&set);
+    std::vector<std::span<const std::uint64_t>> words;
+    for (const auto& set : sets) words.emplace_back(set.words());
     for (int threshold = 1; threshold <= static_cast<int>(set_count); ++threshold) {
-      std::vector<CellSet> scratch(static_cast<std::size_t>(threshold), CellSet(cells));
+      const std::size_t size = sets.front().words().size();
+      std::vector<std::vector<std::uint64_t>> scratch(static_cast<std::size_t>(threshold),
+                                                      std::vector<std::uint64_t>(size, 1));
       CellSet result(cells);
-      count_at_least(pointers, threshold, scratch, result);
+      count_at_least(words, threshold, scratch, result.words());
       for (CellIndex c = 0; c < cells; ++c) {
         int count = 0;
         for (const auto& set : sets) count += set.test(c) ? 1 : 0;
@@ -34,6 +38,17 @@ TEST(CountAtLeast, AgreesWithCountingCellByCell) {
       }
     }
   }
+}
+
+TEST(CountAtLeast, RefusesArraysOfOtherSizes) {
+  const std::vector<std::uint64_t> three(3, 0);
+  const std::vector<std::uint64_t> four(4, 0);
+  std::vector<std::vector<std::uint64_t>> scratch(2, std::vector<std::uint64_t>(3, 0));
+  std::vector<std::uint64_t> result(3, 0);
+  EXPECT_THROW(count_at_least({three, four}, 2, scratch, result), std::invalid_argument);
+  EXPECT_THROW(count_at_least({three, three}, 3, scratch, result), std::invalid_argument);
+  EXPECT_THROW(count_at_least({three}, 0, scratch, result), std::invalid_argument);
+  EXPECT_NO_THROW(count_at_least({three, three}, 2, scratch, result));
 }
 
 }  // namespace

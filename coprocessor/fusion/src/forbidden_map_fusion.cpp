@@ -1,29 +1,36 @@
 #include "safecell/fusion/forbidden_map_fusion.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 #include <string>
 
 namespace safecell {
 
-void count_at_least(const std::vector<const CellSet*>& sets, int threshold,
-                    std::vector<CellSet>& scratch, CellSet& result) {
+void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
+                    std::vector<std::vector<std::uint64_t>>& scratch,
+                    std::vector<std::uint64_t>& result) {
   if (threshold < 1) throw std::invalid_argument("camera threshold must be >= 1");
   const std::size_t levels = static_cast<std::size_t>(threshold);
-  for (std::size_t k = 0; k < levels; ++k) scratch[k].clear();
-  const std::size_t words = result.words().size();
-  for (const CellSet* set : sets) {
-    const std::uint64_t* incoming = set->words().data();
+  const std::size_t words = result.size();
+  if (scratch.size() < levels) throw std::invalid_argument("count_at_least: too little scratch");
+  for (std::size_t k = 0; k < levels; ++k) {
+    if (scratch[k].size() != words) throw std::invalid_argument("count_at_least: scratch size");
+    std::fill(scratch[k].begin(), scratch[k].end(), 0);
+  }
+  for (const auto set : sets) {
+    if (set.size() != words) throw std::invalid_argument("count_at_least: sets of other sizes");
+    const std::uint64_t* incoming = set.data();
     // Highest level first, so that each set adds at most one to a cell's count.
     for (std::size_t k = levels; k-- > 1;) {
-      std::uint64_t* level = scratch[k].words().data();
-      const std::uint64_t* below = scratch[k - 1].words().data();
+      std::uint64_t* level = scratch[k].data();
+      const std::uint64_t* below = scratch[k - 1].data();
       for (std::size_t w = 0; w < words; ++w) level[w] |= below[w] & incoming[w];
     }
-    std::uint64_t* first = scratch[0].words().data();
+    std::uint64_t* first = scratch[0].data();
     for (std::size_t w = 0; w < words; ++w) first[w] |= incoming[w];
   }
-  result.words() = scratch[levels - 1].words();
+  std::copy(scratch[levels - 1].begin(), scratch[levels - 1].end(), result.begin());
 }
 
 CellSet observable_cells(const PixelToCellsTable& table) {
@@ -71,24 +78,32 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     if (camera.pixel_to_cells.cell_count() != cells) {
       throw std::invalid_argument("LUT-2 of camera '" + camera.camera + "' is of another grid");
     }
-    suspicious_.emplace_back(cells);
     suspicious_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
     observable_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
     for (std::size_t pixel = 0; pixel < camera.pixel_to_cells.pixel_count(); ++pixel) {
       camera.pixel_to_cells.add_cells(pixel, observable_lines_.back());
     }
     observable_.emplace_back(cells);
-    observable_lines_.back().pack_into(observable_.back());
+    observable_lines_.back().pack_into(observable_.back());  // folds it, too
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
     remaining_.emplace_back(luts.columns, luts.rows);
   }
-  camera_sets_.reserve(luts.cameras.size());
-  at_least_.assign(static_cast<std::size_t>(settings.camera_threshold), CellSet(cells));
+  camera_lines_.reserve(luts.cameras.size());
+  const std::size_t words = observable_lines_.front().lines().size();
+  at_least_.assign(static_cast<std::size_t>(settings.camera_threshold),
+                   std::vector<std::uint64_t>(words, 0));
+  critical_lines_.assign(words, 0);
   critical_ = CellSet(cells);
   forbidden_ = CellSet(cells);
   counts_.obstacle_pixels.assign(luts.cameras.size(), 0);
   counts_.saturated.assign(luts.cameras.size(), false);
+}
+
+CellSet ForbiddenMapFusion::suspicious(std::size_t camera) const {
+  CellSet cells(critical_.cell_count());
+  suspicious_lines_.at(camera).pack_lines(suspicious_lines_.at(camera).lines(), cells);
+  return cells;
 }
 
 void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observations) const {
@@ -167,20 +182,23 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
     throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
   }
   remove_robot_from_views(observations, silhouettes_, robot_cell, settings_, robot_, obstacles_);
-  camera_sets_.clear();
+  camera_lines_.clear();
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {
+      suspicious_lines_[camera].clear();
       counts_.obstacle_pixels[camera] = 0;
       counts_.saturated[camera] = false;
-      camera_sets_.push_back(&observable_[camera]);
+      camera_lines_.push_back(observable_lines_[camera].lines());
       continue;
     }
     counts_.saturated[camera] = back_project(camera);
-    suspicious_lines_[camera].pack_into(suspicious_[camera]);
+    suspicious_lines_[camera].fold();
     counts_.obstacle_pixels[camera] = obstacles_[camera].count();
-    camera_sets_.push_back(&suspicious_[camera]);
+    camera_lines_.push_back(suspicious_lines_[camera].lines());
   }
-  count_at_least(camera_sets_, settings_.camera_threshold, at_least_, critical_);
+  // Counted in the line layout, so that only the result is packed.
+  count_at_least(camera_lines_, settings_.camera_threshold, at_least_, critical_lines_);
+  observable_lines_.front().pack_lines(critical_lines_, critical_);
   forbidden_.words() = critical_.words();
   forbidden_ |= luts_.static_cells;
   counts_.critical_cells = critical_.count();

@@ -94,7 +94,7 @@ std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
   return written;
 }
 
-void CellLines::fold_levels() {
+void CellLines::fold() {
   for (std::uint32_t level = lowest_written_; level < axes_.count; ++level) {
     std::uint64_t* const low = words_.data() + level_word_[level];
     std::uint64_t* up = words_.data() + level_word_[level + 1];
@@ -110,8 +110,8 @@ void CellLines::fold_levels() {
 bool CellLines::contains(CellLines& other) {
   if (other.words_.size() != words_.size())
     throw std::invalid_argument("cell sets of different grids");
-  fold_levels();
-  other.fold_levels();
+  fold();
+  other.fold();
   std::uint64_t missing = 0;
   for (std::size_t i = level_word_[axes_.count]; i < words_.size(); ++i) {
     missing |= other.words_[i] & ~words_[i];
@@ -167,12 +167,22 @@ void CellLines::add_long_lines(std::uint64_t* const lines, CellIndex start,
   });
 }
 
+std::span<const std::uint64_t> CellLines::lines() const {
+  if (lowest_written_ != axes_.count) throw std::logic_error("cell lines read before fold()");
+  return std::span<const std::uint64_t>(words_).subspan(level_word_[axes_.count]);
+}
+
 void CellLines::pack_into(CellSet& cells) {
-  if (cells.cell_count() != cell_count_)
+  fold();
+  pack_lines(lines(), cells);
+}
+
+void CellLines::pack_lines(std::span<const std::uint64_t> lines, CellSet& cells) const {
+  if (cells.cell_count() != cell_count_ || lines.size() != line_count() * words_per_line_) {
     throw std::invalid_argument("cell sets of different grids");
-  fold_levels();
+  }
   std::uint64_t* const out = cells.words().data();
-  const std::uint64_t* const full = words_.data() + level_word_[axes_.count];
+  const std::uint64_t* const full = lines.data();
   cells.clear();
   for (std::size_t line = 0; line < line_count(); ++line) {
     const std::uint64_t* in = full + line * words_per_line_;

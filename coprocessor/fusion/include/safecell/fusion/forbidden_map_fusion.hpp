@@ -6,8 +6,8 @@
 //
 // Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
 // all obstacles adds its precomputed union at once (pixel_table_builder.hpp). Boxes are filled in
-// the line layout (cell_lines.hpp) and each camera's set is packed once at the end; a camera
-// stops early once its set holds every cell it can see.
+// the line layout (cell_lines.hpp), where the cameras are also counted; only the critical cells
+// are packed. A camera stops early once its set holds every cell it can see.
 //
 // Counting is per camera, not per pixel: many pixels of one camera marking a cell still count
 // once. An unknown view counts as suspecting every cell the camera can see at all.
@@ -15,6 +15,8 @@
 // After construction a cycle allocates nothing. Not thread-safe: one engine per fusion thread.
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "safecell/fusion/camera_observation.hpp"
@@ -53,9 +55,9 @@ class ForbiddenMapFusion {
 
   [[nodiscard]] const CellSet& forbidden() const { return forbidden_; }
   [[nodiscard]] const CellSet& critical() const { return critical_; }
-  [[nodiscard]] const CellSet& suspicious(std::size_t camera) const {
-    return suspicious_.at(camera);
-  }
+  // The cells one camera suspected in the last cycle (none for an unknown view); packed on each
+  // call, for pictures and tests.
+  [[nodiscard]] CellSet suspicious(std::size_t camera) const;
   // The obstacle pixels of one camera in the last cycle (blocked minus the robot).
   [[nodiscard]] const FeatureMask& obstacles(std::size_t camera) const {
     return obstacles_.at(camera);
@@ -82,11 +84,12 @@ class ForbiddenMapFusion {
   const RobotSilhouettes& silhouettes_;
   FusionSettings settings_;
   std::vector<CellSet> observable_;
-  std::vector<CellLines> suspicious_lines_;  // filled box by box, then packed into suspicious_
-  std::vector<CellSet> suspicious_;
-  std::vector<CellLines> observable_lines_;  // observable_ in the line layout
-  std::vector<const CellSet*> camera_sets_;  // this cycle's set per camera
-  std::vector<CellSet> at_least_;  // at_least_[k]: cells suspected by at least k + 1 cameras
+  std::vector<CellLines> suspicious_lines_;                   // per camera, filled box by box
+  std::vector<CellLines> observable_lines_;                   // observable_ in the line layout
+  std::vector<std::span<const std::uint64_t>> camera_lines_;  // this cycle's set per camera
+  // at_least_[k]: cells suspected by at least k + 1 cameras; all in the line layout.
+  std::vector<std::vector<std::uint64_t>> at_least_;
+  std::vector<std::uint64_t> critical_lines_;
   std::vector<FeatureMask> robot_;
   std::vector<FeatureMask> obstacles_;
   std::vector<FeatureMask> remaining_;  // obstacle pixels not yet covered by a whole block
@@ -95,10 +98,13 @@ class ForbiddenMapFusion {
   FusionCounts counts_;
 };
 
-// The cells that at least `threshold` of the sets hold, into `result` (scratch: `threshold`
-// sets of the same size, reused). Word-parallel: at_least[k] |= at_least[k - 1] & set.
-void count_at_least(const std::vector<const CellSet*>& sets, int threshold,
-                    std::vector<CellSet>& scratch, CellSet& result);
+// The bits that at least `threshold` of the word arrays `sets` hold, into `result` (all of
+// result.size() words; scratch: at least `threshold` arrays of that size, reused).
+// Word-parallel: at_least[k] |= at_least[k - 1] & set. Throws std::invalid_argument for sizes
+// that do not match or a threshold below 1.
+void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
+                    std::vector<std::vector<std::uint64_t>>& scratch,
+                    std::vector<std::uint64_t>& result);
 
 // Every cell some pixel of the table back-projects to.
 [[nodiscard]] CellSet observable_cells(const PixelToCellsTable& table);

@@ -12,6 +12,7 @@
 // are not const. CellSet (the compact layout every other part uses) is obtained with pack_into().
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "safecell/lut/box_rows.hpp"
@@ -29,10 +30,18 @@ class CellLines {
   // in the grid, as PixelToCellsTable checks when it is made).
   // Returns the number of lines written (its cost).
   std::size_t add_box(CellIndex start, const std::uint8_t* extents);
+  // Folds the levels into the full grid (nothing to do when no box went below it since).
+  void fold();
+  // The full grid, a line after the other (throws std::logic_error when boxes were added below it
+  // since the last fold).
+  [[nodiscard]] std::span<const std::uint64_t> lines() const;
   // Whether every cell of `other` (of the same grid) is in this set.
   [[nodiscard]] bool contains(CellLines& other);
   // Writes the set into `cells` (of the same grid) in the compact layout.
   void pack_into(CellSet& cells);
+  // Writes `lines` (line_count() lines of this layout, such as lines()) into `cells` in the
+  // compact layout.
+  void pack_lines(std::span<const std::uint64_t> lines, CellSet& cells) const;
 
   [[nodiscard]] std::uint32_t words_per_line() const { return words_per_line_; }
   // Lines of the full grid.
@@ -44,8 +53,6 @@ class CellLines {
     std::uint32_t cell = 0;  // along joint 0
   };
   [[nodiscard]] LinePlace place_of(CellIndex cell) const;
-  // Folds levels lowest_written_.. into the full grid.
-  void fold_levels();
   void add_one_word_lines(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
                           std::uint32_t axes);
   void add_long_lines(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
