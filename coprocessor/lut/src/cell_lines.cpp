@@ -42,7 +42,7 @@ CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
     throw std::invalid_argument("cell lines: the grid has no joint-0 lines");
   }
   line_cells_ = axes.cells[0];
-  inverse_line_cells_ = 1.0 / static_cast<double>(line_cells_);
+  line_divider_ = line_cells_ == 1 ? 0 : ~std::uint64_t{0} / line_cells_ + 1;
   words_per_line_ = (line_cells_ + 63) / 64;
   for (std::uint32_t axis = 1; axis < axes.count; ++axis) {
     line_stride_[axis] = axes.stride[axis] / line_cells_;
@@ -57,41 +57,9 @@ CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
   lowest_written_ = axes.count;
 }
 
-CellLines::LinePlace CellLines::place_of(CellIndex cell) const {
-  // A multiplication instead of a division (this runs once per box): the quotient from the
-  // floating-point reciprocal is off by at most one, which the remainder shows.
-  auto line = static_cast<std::int64_t>(static_cast<double>(cell) * inverse_line_cells_);
-  std::int64_t within = static_cast<std::int64_t>(cell) - line * line_cells_;
-  if (within < 0) {
-    --line;
-    within += line_cells_;
-  } else if (within >= line_cells_) {
-    ++line;
-    within -= line_cells_;
-  }
-  return {static_cast<std::size_t>(line), static_cast<std::uint32_t>(within)};
-}
-
 void CellLines::clear() {
   std::fill(words_.begin(), words_.end(), 0);
   lowest_written_ = axes_.count;
-}
-
-std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
-  // The level: the box's axes up to the first of the trailing ones it spans whole. Its lowest
-  // cell lies on coordinate 0 of those, so its line index is the same in the level's lines.
-  std::uint32_t axes = axes_.count;
-  while (axes > 1 && extents[axes - 1] == axes_.cells[axes - 1]) --axes;
-  std::uint64_t* const lines = words_.data() + level_word_[axes];
-  if (words_per_line_ == 1) {
-    add_one_word_lines(lines, start, extents, axes);
-  } else {
-    add_long_lines(lines, start, extents, axes);
-  }
-  lowest_written_ = std::min(lowest_written_, axes);
-  std::size_t written = 1;
-  for (std::uint32_t axis = 1; axis < axes; ++axis) written *= extents[axis];
-  return written;
 }
 
 void CellLines::fold() {
@@ -119,33 +87,8 @@ bool CellLines::contains(CellLines& other) {
   return missing == 0;
 }
 
-void CellLines::add_one_word_lines(std::uint64_t* const lines, CellIndex start,
-                                   const std::uint8_t* extents, std::uint32_t axes) {
-  const LinePlace place = place_of(start);
-  const std::uint64_t mask = bit_run(place.cell, extents[0]);
-  if (axes <= 4) {
-    // The common grid (joints 1-4 discretised): three plain loops, the innermost over
-    // neighbouring words.
-    const std::uint32_t run = axes > 1 ? extents[1] : 1;
-    const std::uint32_t planes = axes > 2 ? extents[2] : 1;
-    const std::uint32_t volumes = axes > 3 ? extents[3] : 1;
-    for (std::uint32_t k3 = 0; k3 < volumes; ++k3) {
-      std::uint64_t* plane = lines + place.line + k3 * line_stride_[3];
-      for (std::uint32_t k2 = 0; k2 < planes; ++k2, plane += line_stride_[2]) {
-        for (std::uint32_t k1 = 0; k1 < run; ++k1) plane[k1] |= mask;
-      }
-    }
-    return;
-  }
-  const std::uint32_t run = extents[1];
-  for_each_line_run(axes, line_stride_, place.line, extents, [&](std::size_t line_index) {
-    std::uint64_t* line = lines + line_index;
-    for (std::uint32_t i = 0; i < run; ++i) line[i] |= mask;
-  });
-}
-
-void CellLines::add_long_lines(std::uint64_t* const lines, CellIndex start,
-                               const std::uint8_t* extents, std::uint32_t axes) {
+void CellLines::add_box_elsewhere(std::uint64_t* const lines, CellIndex start,
+                                  const std::uint8_t* extents, std::uint32_t axes) {
   // The masks of the row inside a line: at most ceil(255 / 64) + 1 words.
   std::uint32_t word_in_line[5]{};
   std::uint64_t masks[5]{};

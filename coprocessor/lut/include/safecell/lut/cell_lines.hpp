@@ -11,6 +11,7 @@
 // axes it spans whole) before the set is read: by contains() and pack_into(), which is why those
 // are not const. CellSet (the compact layout every other part uses) is obtained with pack_into().
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -28,7 +29,7 @@ class CellLines {
   void clear();
   // ORs the box with lowest cell `start` and one extent per box axis (precondition: the box lies
   // in the grid, as PixelToCellsTable checks when it is made).
-  // Returns the number of lines written (its cost).
+  // Returns the number of lines written (its cost). Inline: fusion calls it once per box.
   std::size_t add_box(CellIndex start, const std::uint8_t* extents);
   // Folds the levels into the full grid (nothing to do when no box went below it since).
   void fold();
@@ -53,15 +54,16 @@ class CellLines {
     std::uint32_t cell = 0;  // along joint 0
   };
   [[nodiscard]] LinePlace place_of(CellIndex cell) const;
-  void add_one_word_lines(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
-                          std::uint32_t axes);
-  void add_long_lines(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
-                      std::uint32_t axes);
+  // Grids of more than four box axes, or of lines longer than a word.
+  void add_box_elsewhere(std::uint64_t* lines, CellIndex start, const std::uint8_t* extents,
+                         std::uint32_t axes);
 
   BoxAxes axes_;
   std::uint32_t cell_count_ = 0;
   std::uint32_t line_cells_ = 1;  // cells along joint 0
-  double inverse_line_cells_ = 1.0;
+  // ceil(2^64 / line_cells_): cell / line_cells_ is the high word of cell * line_divider_ for
+  // every 32-bit cell (Lemire, Kaser & Kurz 2019), one multiplication instead of a division.
+  std::uint64_t line_divider_ = 0;
   std::uint32_t words_per_line_ = 1;  // ceil(line_cells_ / 64)
   // Lines between neighbours along each box axis (axis 0 unused).
   std::size_t line_stride_[kMaxJoints]{};
@@ -73,5 +75,43 @@ class CellLines {
   std::uint32_t lowest_written_ = 0;
   std::vector<std::uint64_t> words_;
 };
+
+inline CellLines::LinePlace CellLines::place_of(CellIndex cell) const {
+  if (line_cells_ == 1) return {cell, 0};
+  __extension__ using Wide = unsigned __int128;
+  const auto line = static_cast<std::uint32_t>((static_cast<Wide>(line_divider_) * cell) >> 64);
+  return {line, cell - line * line_cells_};
+}
+
+inline std::size_t CellLines::add_box(CellIndex start, const std::uint8_t* extents) {
+  // The level: the box's axes up to the first of the trailing ones it spans whole. Its lowest
+  // cell lies on coordinate 0 of those, so its line index is the same in the level's lines.
+  std::uint32_t axes = axes_.count;
+  while (axes > 1 && extents[axes - 1] == axes_.cells[axes - 1]) --axes;
+  if (axes < lowest_written_) lowest_written_ = axes;
+  std::uint64_t* const lines = words_.data() + level_word_[axes];
+  const std::uint32_t run = axes > 1 ? extents[1] : 1;
+  const std::uint32_t planes = axes > 2 ? extents[2] : 1;
+  const std::uint32_t volumes = axes > 3 ? extents[3] : 1;
+  if (words_per_line_ != 1 || axes > 4) {
+    add_box_elsewhere(lines, start, extents, axes);
+  } else {
+    // The common grid (joints 1-4 discretised, joint 0 in one word): three plain loops, the
+    // innermost over neighbouring words.
+    const LinePlace place = place_of(start);
+    const std::uint64_t mask = (extents[0] == 64 ? ~std::uint64_t{0}
+                                                 : (std::uint64_t{1} << extents[0]) - 1)
+                               << place.cell;
+    for (std::uint32_t k3 = 0; k3 < volumes; ++k3) {
+      std::uint64_t* plane = lines + place.line + k3 * line_stride_[3];
+      for (std::uint32_t k2 = 0; k2 < planes; ++k2, plane += line_stride_[2]) {
+        for (std::uint32_t k1 = 0; k1 < run; ++k1) plane[k1] |= mask;
+      }
+    }
+  }
+  std::size_t written = std::size_t{run} * planes * volumes;
+  for (std::uint32_t axis = 4; axis < axes; ++axis) written *= extents[axis];
+  return written;
+}
 
 }  // namespace safecell
