@@ -3,7 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <span>
+#include <stdexcept>
+#include <vector>
 
+#include "safecell/lut/cell_slices.hpp"
+#include "safecell/lut/pixel_to_cells_table.hpp"
+#include "safecell/lut/strip_cover.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {
@@ -29,29 +35,44 @@ CellIndex cell_count_of(const BoxAxes& axes) {
   return axes.stride[axes.count - 1] * axes.cells[axes.count - 1];
 }
 
-TEST(CellLines, PackedBoxesEqualTheBoxesSetRowByRow) {
+// Random runs of cells in random lines of the grid.
+CellSet random_runs(std::mt19937_64& rng, CellIndex cells, std::uint32_t line_cells) {
+  CellSet set(cells);
+  const int runs = std::uniform_int_distribution<int>(0, 12)(rng);
+  for (int r = 0; r < runs; ++r) {
+    const CellIndex line = std::uniform_int_distribution<CellIndex>(0, cells / line_cells - 1)(rng);
+    const auto first = std::uniform_int_distribution<std::uint32_t>(0, line_cells - 1)(rng);
+    const auto length = std::uniform_int_distribution<std::uint32_t>(1, line_cells - first)(rng);
+    set.set_range(line * line_cells + first, line * line_cells + first + length);
+  }
+  return set;
+}
+
+void add(CellLines& lines, const CellSet& cells, const BoxAxes& axes) {
+  std::vector<std::uint8_t> bytes;
+  append_strips(cells, axes, bytes);
+  lines.add_strips(bytes.data(), bytes.data() + bytes.size());
+}
+
+TEST(CellLines, PackedStripsEqualTheirCells) {
   test::PropertyRun run(300);
   for (int i = 0; i < run.iterations(); ++i) {
     const BoxAxes axes = random_axes(run.rng());
     const CellIndex cells = cell_count_of(axes);
     CellLines lines(axes, cells);
     CellSet oracle(cells);
-    const int boxes = std::uniform_int_distribution<int>(0, 6)(run.rng());
-    for (int b = 0; b < boxes; ++b) {
-      CellIndex start = 0;
-      std::uint8_t extents[kMaxJoints]{};
-      for (std::uint32_t axis = 0; axis < axes.count; ++axis) {
-        const auto low =
-            std::uniform_int_distribution<std::uint32_t>(0, axes.cells[axis] - 1)(run.rng());
-        const auto extent = std::uniform_int_distribution<std::uint32_t>(
-            1, std::min<std::uint32_t>(255, axes.cells[axis] - low))(run.rng());
-        start += low * axes.stride[axis];
-        extents[axis] = static_cast<std::uint8_t>(extent);
+    const int sets = std::uniform_int_distribution<int>(0, 4)(run.rng());
+    for (int k = 0; k < sets; ++k) {
+      CellSet set = random_runs(run.rng(), cells, axes.cells[0]);
+      if (std::bernoulli_distribution(0.5)(run.rng()) && axes.count > 1) {
+        // Independent of the last axis, so that a lower level is written.
+        const std::uint32_t last = axes.count - 1;
+        set = repeat_slice(cells_in_every_slice(set, axes.stride[last], axes.cells[last]),
+                           axes.cells[last]);
+        set |= random_runs(run.rng(), cells, axes.cells[0]);
       }
-      lines.add_box(start, extents);
-      for_each_box_row(axes, start, extents, [&](CellIndex first, std::uint32_t run_cells) {
-        oracle.set_range(first, first + run_cells);
-      });
+      add(lines, set, axes);
+      oracle |= set;
     }
     CellSet packed(cells);
     packed.fill();  // pack_into overwrites what was there
@@ -72,18 +93,22 @@ TEST(CellLines, ContainsIsTheSubsetRelation) {
   axes.cells[1] = 4;
   CellLines small(axes, 280);
   CellLines large(axes, 280);
-  const std::uint8_t small_box[] = {5, 2};
-  const std::uint8_t large_box[] = {30, 3};
-  small.add_box(66, small_box);  // cells 66..70 of lines 0 and 1: across the word boundary
+  CellSet small_cells(280);
+  // Cells 62..67 of lines 0 and 1: across the boundary of the line's first word.
+  small_cells.set_range(62, 68);
+  small_cells.set_range(70 + 62, 70 + 68);
+  CellSet large_cells(280);
+  for (CellIndex line = 0; line < 3; ++line) large_cells.set_range(line * 70 + 50, line * 70 + 70);
+  add(small, small_cells, axes);
   CellLines empty(axes, 280);
   EXPECT_TRUE(small.contains(empty));
   EXPECT_FALSE(large.contains(small));
-  EXPECT_EQ(large.add_box(50, large_box), 3U);
+  add(large, large_cells, axes);
   EXPECT_TRUE(large.contains(small));
   EXPECT_FALSE(small.contains(large));
 }
 
-TEST(CellLines, ABoxSpanningTheTrailingAxesWholeCostsItsLeadingLines) {
+TEST(CellLines, ALowerLevelLineStandsForAllItsCopies) {
   BoxAxes axes;
   axes.count = 3;
   axes.stride[0] = 1;
@@ -93,21 +118,17 @@ TEST(CellLines, ABoxSpanningTheTrailingAxesWholeCostsItsLeadingLines) {
   axes.stride[2] = 60;
   axes.cells[2] = 7;
   CellLines lines(axes, 420);
-  const std::uint8_t whole_along_axis_2[] = {3, 2, 7};
-  const std::uint8_t whole_along_axes_1_and_2[] = {2, 6, 7};
-  EXPECT_EQ(lines.add_box(14, whole_along_axis_2), 2U);       // lines 1 and 2 of level 2
-  EXPECT_EQ(lines.add_box(7, whole_along_axes_1_and_2), 1U);  // the one line of level 1
-  CellSet oracle(420);
-  for_each_box_row(axes, 14, whole_along_axis_2, [&](CellIndex first, std::uint32_t run) {
-    oracle.set_range(first, first + run);
-  });
-  for_each_box_row(axes, 7, whole_along_axes_1_and_2, [&](CellIndex first, std::uint32_t run) {
-    oracle.set_range(first, first + run);
-  });
+  // Line 1 + 1 of the lines (level 1 has one line): joint 1 at 1, cells 3..5 along joint 0.
+  std::vector<std::uint8_t> bytes;
+  const LineRun run{3, 3};
+  PixelToCellsTable::append_strip(bytes, 0, 2, std::span<const LineRun>(&run, 1));
+  EXPECT_EQ(lines.add_strips(bytes.data(), bytes.data() + bytes.size()), 1U);
+  EXPECT_THROW((void)lines.lines(), std::logic_error);  // not folded yet
   CellSet packed(420);
   lines.pack_into(packed);
-  EXPECT_EQ(packed, oracle);
-  EXPECT_EQ(packed.count(), 3U * 2U * 7U + 2U * 6U * 7U);
+  CellSet expected(420);
+  for (CellIndex copy = 0; copy < 7; ++copy) expected.set_range(copy * 60 + 13, copy * 60 + 16);
+  EXPECT_EQ(packed, expected);
 }
 
 TEST(CellLines, OneWordPerLineUpTo64CellsAlongJointZero) {

@@ -79,11 +79,12 @@ void expect_same(const LutSet& a, const LutSet& b) {
     EXPECT_EQ(x.camera, y.camera);
     EXPECT_EQ(x.covered_pairs, y.covered_pairs);
     EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.offsets(), y.pixel_to_cells.offsets()));
-    EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.box_bytes(), y.pixel_to_cells.box_bytes()));
+    EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.strip_bytes(), y.pixel_to_cells.strip_bytes()));
     ASSERT_EQ(x.pixel_blocks.size(), y.pixel_blocks.size());
     for (std::size_t l = 0; l < x.pixel_blocks.size(); ++l) {
       EXPECT_TRUE(std::ranges::equal(x.pixel_blocks[l].offsets(), y.pixel_blocks[l].offsets()));
-      EXPECT_TRUE(std::ranges::equal(x.pixel_blocks[l].box_bytes(), y.pixel_blocks[l].box_bytes()));
+      EXPECT_TRUE(
+          std::ranges::equal(x.pixel_blocks[l].strip_bytes(), y.pixel_blocks[l].strip_bytes()));
     }
     EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.offsets(), y.cell_to_pixels.offsets()));
     EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.rects(), y.cell_to_pixels.rects()));
@@ -101,7 +102,7 @@ TEST_F(LutFile, ModelSetRoundTrips) {
   EXPECT_EQ(summary.file_bytes, fs::file_size(path));
   ASSERT_EQ(summary.cameras.size(), 4U);
   EXPECT_EQ(summary.cameras[2].name, "cam2");
-  EXPECT_EQ(summary.cameras[2].boxes, set_->cameras[2].pixel_to_cells.total_boxes());
+  EXPECT_EQ(summary.cameras[2].strips, set_->cameras[2].pixel_to_cells.total_strips());
   EXPECT_EQ(summary.cameras[2].covered_pairs, set_->cameras[2].covered_pairs);
   EXPECT_GT(summary.cameras[2].covered_pairs, 0U);
   EXPECT_EQ(summary.cameras[2].cell_table_bytes, 0U);

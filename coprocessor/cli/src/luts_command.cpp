@@ -60,7 +60,7 @@ nlohmann::ordered_json summary_json(const fs::path& path, const LutFileSummary& 
                        {"lut2_bytes", camera.pixel_table_bytes},
                        {"lut2_block_bytes", camera.block_table_bytes},
                        {"lut2_block_levels", camera.block_levels},
-                       {"lut2_boxes", camera.boxes},
+                       {"lut2_strips", camera.strips},
                        {"covered_pairs", camera.covered_pairs},
                        {"uncompressed_bytes", camera_uncompressed},
                        {"compression_ratio",
@@ -100,14 +100,14 @@ void print_summary(const nlohmann::ordered_json& report, std::ostream& out) {
   TextTable table({{"camera", Align::kLeft},
                    {"LUT-1 [MB]", Align::kRight},
                    {"LUT-2 [MB]", Align::kRight},
-                   {"LUT-2 boxes", Align::kRight},
+                   {"LUT-2 strips", Align::kRight},
                    {"uncompressed [MB]", Align::kRight},
                    {"ratio", Align::kRight}});
   for (const auto& camera : report["cameras"]) {
     table.add_row({camera["name"].get<std::string>(),
                    megabytes(camera["lut1_bytes"].get<std::uint64_t>()),
                    megabytes(camera["lut2_bytes"].get<std::uint64_t>()),
-                   grouped(camera["lut2_boxes"].get<unsigned long long>()),
+                   grouped(camera["lut2_strips"].get<unsigned long long>()),
                    megabytes(camera["uncompressed_bytes"].get<std::uint64_t>()),
                    fixed(camera["compression_ratio"].get<double>(), 1) + "x"});
   }

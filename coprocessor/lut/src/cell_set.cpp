@@ -82,6 +82,19 @@ CellIndex CellSet::next_set(CellIndex from) const {
   return std::min(found, cell_count_);
 }
 
+CellIndex CellSet::next_clear(CellIndex from) const {
+  if (from >= cell_count_) return cell_count_;
+  std::size_t word = from >> 6;
+  std::uint64_t bits = ~words_[word] & from_bit(from & 63);
+  while (bits == 0) {
+    if (++word == words_.size()) return cell_count_;
+    bits = ~words_[word];
+  }
+  const auto found =
+      static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+  return std::min(found, cell_count_);
+}
+
 CellSet& CellSet::operator|=(const CellSet& other) {
   if (other.cell_count_ != cell_count_) throw std::invalid_argument("cell sets of different grids");
   for (std::size_t i = 0; i < words_.size(); ++i) words_[i] |= other.words_[i];

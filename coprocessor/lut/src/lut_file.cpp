@@ -26,16 +26,16 @@ constexpr std::uint16_t kNoCamera = 0xFFFFU;
 enum class SectionKind : std::uint32_t {
   kCameraName = 1,
   kPixelOffsets = 2,
-  kPixelBoxes = 3,
+  kPixelStrips = 3,
   kCellOffsets = 4,
   kCellRects = 5,
   kStaticCells = 6,
   kCameraStats = 7,
   kBlockOffsets = 8,
-  kBlockBoxes = 9,
+  kBlockStrips = 9,
 };
 
-// The camera statistics section: covered pairs, boxes of the pixels, boxes of the blocks.
+// The camera statistics section: covered pairs, strips of the pixels, strips of the blocks.
 constexpr std::size_t kCameraStatsWords = 3;
 
 struct Header {
@@ -195,18 +195,18 @@ void write_lut_file(const std::filesystem::path& path, const LutSet& set) {
   for (std::size_t c = 0; c < set.cameras.size(); ++c) {
     const auto camera = static_cast<std::uint16_t>(c);
     const CameraLuts& luts = set.cameras[c];
-    std::uint64_t block_boxes = 0;
-    for (const auto& level : luts.pixel_blocks) block_boxes += level.total_boxes();
-    const std::uint64_t stats[kCameraStatsWords] = {luts.covered_pairs,
-                                                    luts.pixel_to_cells.total_boxes(), block_boxes};
+    std::uint64_t block_strips = 0;
+    for (const auto& level : luts.pixel_blocks) block_strips += level.total_strips();
+    const std::uint64_t stats[kCameraStatsWords] = {
+        luts.covered_pairs, luts.pixel_to_cells.total_strips(), block_strips};
     image.add(SectionKind::kCameraName, camera, luts.camera.data(), luts.camera.size());
     image.add(SectionKind::kCameraStats, camera, stats, sizeof(stats));
     image.add(SectionKind::kPixelOffsets, camera, luts.pixel_to_cells.offsets());
-    image.add(SectionKind::kPixelBoxes, camera, luts.pixel_to_cells.box_bytes());
+    image.add(SectionKind::kPixelStrips, camera, luts.pixel_to_cells.strip_bytes());
     for (std::size_t l = 0; l < luts.pixel_blocks.size(); ++l) {
       const auto level = static_cast<std::uint16_t>(l + 1);
       image.add(SectionKind::kBlockOffsets, camera, luts.pixel_blocks[l].offsets(), level);
-      image.add(SectionKind::kBlockBoxes, camera, luts.pixel_blocks[l].box_bytes(), level);
+      image.add(SectionKind::kBlockStrips, camera, luts.pixel_blocks[l].strip_bytes(), level);
     }
     if (luts.cell_to_pixels.cell_count() > 0) {
       image.add(SectionKind::kCellOffsets, camera, luts.cell_to_pixels.offsets());
@@ -265,15 +265,15 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
           throw LutFileError(path, "camera statistics of the wrong size");
         }
         camera.covered_pairs = stats[0];
-        camera.boxes = stats[1];
+        camera.strips = stats[1];
         break;
       }
       case SectionKind::kPixelOffsets:
-      case SectionKind::kPixelBoxes:
+      case SectionKind::kPixelStrips:
         camera.pixel_table_bytes += entry.bytes;
         break;
       case SectionKind::kBlockOffsets:
-      case SectionKind::kBlockBoxes:
+      case SectionKind::kBlockStrips:
         camera.pixel_table_bytes += entry.bytes;
         camera.block_table_bytes += entry.bytes;
         camera.block_levels = std::max<int>(camera.block_levels, entry.level);
@@ -315,12 +315,12 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
   struct CameraSections {
     const SectionEntry* name = nullptr;
     const SectionEntry* pixel_offsets = nullptr;
-    const SectionEntry* pixel_boxes = nullptr;
+    const SectionEntry* pixel_strips = nullptr;
     const SectionEntry* cell_offsets = nullptr;
     const SectionEntry* cell_rects = nullptr;
     const SectionEntry* stats = nullptr;
     std::vector<const SectionEntry*> block_offsets;  // [level - 1]
-    std::vector<const SectionEntry*> block_boxes;
+    std::vector<const SectionEntry*> block_strips;
   };
   std::vector<CameraSections> cameras(header.camera_count);
   const SectionEntry* static_cells = nullptr;
@@ -341,8 +341,8 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
       case SectionKind::kPixelOffsets:
         sections.pixel_offsets = &entry;
         break;
-      case SectionKind::kPixelBoxes:
-        sections.pixel_boxes = &entry;
+      case SectionKind::kPixelStrips:
+        sections.pixel_strips = &entry;
         break;
       case SectionKind::kCellOffsets:
         sections.cell_offsets = &entry;
@@ -354,13 +354,13 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
         sections.stats = &entry;
         break;
       case SectionKind::kBlockOffsets:
-      case SectionKind::kBlockBoxes: {
+      case SectionKind::kBlockStrips: {
         if (entry.level < 1 || entry.level > 16) {
           throw LutFileError(path, "a block section of level " + std::to_string(entry.level));
         }
         auto& slots = static_cast<SectionKind>(entry.kind) == SectionKind::kBlockOffsets
                           ? sections.block_offsets
-                          : sections.block_boxes;
+                          : sections.block_strips;
         if (slots.size() < entry.level) slots.resize(entry.level, nullptr);
         slots[entry.level - 1U] = &entry;
         break;
@@ -386,7 +386,7 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     const CameraSections& sections = cameras[c];
     if (sections.name == nullptr || sections.pixel_offsets == nullptr ||
-        sections.pixel_boxes == nullptr || sections.stats == nullptr) {
+        sections.pixel_strips == nullptr || sections.stats == nullptr) {
       throw LutFileError(path, "camera " + std::to_string(c) + " lacks its LUT-2 sections");
     }
     if (set.source == LutSource::kRecorded &&
@@ -401,16 +401,16 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
       throw LutFileError(path, "camera statistics of the wrong size");
     }
     luts.covered_pairs = stats[0];
-    if (sections.block_offsets.size() != sections.block_boxes.size()) {
+    if (sections.block_offsets.size() != sections.block_strips.size()) {
       throw LutFileError(path, "camera '" + luts.camera + "': block levels do not pair up");
     }
     try {
       luts.pixel_to_cells = PixelToCellsTable(
           grid, set.columns, set.rows,
           section_span<std::uint64_t>(path, *mapping, *sections.pixel_offsets),
-          section_span<std::uint8_t>(path, *mapping, *sections.pixel_boxes), mapping);
+          section_span<std::uint8_t>(path, *mapping, *sections.pixel_strips), mapping);
       for (std::size_t l = 0; l < sections.block_offsets.size(); ++l) {
-        if (sections.block_offsets[l] == nullptr || sections.block_boxes[l] == nullptr) {
+        if (sections.block_offsets[l] == nullptr || sections.block_strips[l] == nullptr) {
           throw LutFileError(
               path, "camera '" + luts.camera + "' lacks block level " + std::to_string(l + 1));
         }
@@ -418,7 +418,7 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
         luts.pixel_blocks.emplace_back(
             grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
             section_span<std::uint64_t>(path, *mapping, *sections.block_offsets[l]),
-            section_span<std::uint8_t>(path, *mapping, *sections.block_boxes[l]), mapping);
+            section_span<std::uint8_t>(path, *mapping, *sections.block_strips[l]), mapping);
       }
       if (sections.cell_offsets != nullptr && sections.cell_rects != nullptr) {
         luts.cell_to_pixels = CellToPixelsTable(

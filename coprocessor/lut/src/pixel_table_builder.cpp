@@ -4,30 +4,30 @@
 #include <stdexcept>
 #include <string>
 
-#include "safecell/lut/box_cover.hpp"
+#include "safecell/lut/strip_cover.hpp"
 
 namespace safecell {
 namespace {
 
-// One level of the pyramid as it is built: boxes of its blocks in row-major block order.
+// One level of the pyramid as it is built: strips of its blocks in row-major block order.
 struct LevelBuild {
   int block = 1;  // pixels per block side
   int columns = 0;
   int rows = 0;
   std::vector<std::uint64_t> offsets{0};
-  std::vector<std::uint8_t> box_bytes;
+  std::vector<std::uint8_t> strip_bytes;
 };
 
-// Cuts the sets of one band's blocks into boxes (in parallel) and appends them to the level.
+// Cuts the sets of one band's blocks into strips (in parallel) and appends them to the level.
 void append_band(std::vector<CellSet>& sets, const BoxAxes& axes, unsigned threads,
                  LevelBuild& level) {
-  std::vector<std::vector<std::uint8_t>> boxes(sets.size());
+  std::vector<std::vector<std::uint8_t>> strips(sets.size());
   parallel_chunks(sets.size(), 16, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) append_boxes(sets[i], axes, boxes[i]);
+    for (std::size_t i = begin; i < end; ++i) append_strips(sets[i], axes, strips[i]);
   });
-  for (const auto& block_boxes : boxes) {
-    level.offsets.push_back(level.offsets.back() + block_boxes.size());
-    level.box_bytes.insert(level.box_bytes.end(), block_boxes.begin(), block_boxes.end());
+  for (const auto& block_strips : strips) {
+    level.offsets.push_back(level.offsets.back() + block_strips.size());
+    level.strip_bytes.insert(level.strip_bytes.end(), block_strips.begin(), block_strips.end());
   }
 }
 
@@ -107,7 +107,7 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
   PixelTables tables;
   for (std::size_t l = 0; l < levels.size(); ++l) {
     PixelToCellsTable table(grid, levels[l].columns, levels[l].rows, std::move(levels[l].offsets),
-                            std::move(levels[l].box_bytes));
+                            std::move(levels[l].strip_bytes));
     if (l == 0) {
       tables.pixels = std::move(table);
     } else {

@@ -35,6 +35,8 @@ class CellSet {
   [[nodiscard]] bool any() const;
   // The first set cell at or after `from`; cell_count() when none.
   [[nodiscard]] CellIndex next_set(CellIndex from) const;
+  // The first cell not set at or after `from`; cell_count() when none.
+  [[nodiscard]] CellIndex next_clear(CellIndex from) const;
 
   CellSet& operator|=(const CellSet& other);
   CellSet& operator&=(const CellSet& other);

@@ -2,7 +2,7 @@
 // Slices of a cell set along its slowest axis. A grid of cells with joint 0 fastest is `slices`
 // slices of `slice_cells` consecutive cells each (slice k holds the cells k * slice_cells ..
 // (k + 1) * slice_cells - 1); a set over the first axes of a grid, repeated once per slice, is the
-// same set extended over the next axis. The LUT-2 box cover (box_cover.hpp) uses both to find
+// same set extended over the next axis. The LUT-2 strip cover (strip_cover.hpp) uses both to find
 // the cells of a set that do not depend on the trailing joints.
 
 #include <cstdint>

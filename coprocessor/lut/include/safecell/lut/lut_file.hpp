@@ -8,7 +8,7 @@
 //     computed with this field zero.
 //   section table: per section its kind, camera (or 0xFFFF), pyramid level, offset and size in
 //     bytes.
-//   sections: per camera its name, statistics, LUT-2 offsets and boxes for the pixels and for each
+//   sections: per camera its name, statistics, LUT-2 offsets and strips for the pixels and for each
 //     block level, and (recorded sets) LUT-1 offsets and rectangles; once, the static-obstacle
 //     cells as 64-bit words.
 // A file of another version, another fingerprint or grid, a bad checksum, or sections that do not
@@ -26,7 +26,7 @@
 
 namespace safecell {
 
-inline constexpr std::uint32_t kLutFileVersion = 2;
+inline constexpr std::uint32_t kLutFileVersion = 3;
 
 class LutFileError : public std::runtime_error {
  public:
@@ -52,7 +52,7 @@ struct LutFileSummary {
     std::uint64_t pixel_table_bytes = 0;  // LUT-2 with its block levels
     std::uint64_t block_table_bytes = 0;  // of which the block levels
     int block_levels = 0;
-    std::uint64_t boxes = 0;  // of the pixels' LUT-2
+    std::uint64_t strips = 0;  // of the pixels' LUT-2
     std::uint64_t covered_pairs = 0;
   };
   std::vector<Camera> cameras;

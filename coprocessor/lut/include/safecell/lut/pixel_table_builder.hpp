@@ -1,12 +1,12 @@
 #pragma once
 // Builds LUT-2 from LUT-1 (paper §4.1): for every feature cell, the C-space cells whose
-// silhouette holds it, as boxes. The cells of a band of feature rows are gathered as one bitset
-// per pixel (the band is sized to a memory budget, so a finer grid streams instead of holding
-// everything), then each pixel's bitset is cut into boxes (box_cover.hpp).
+// silhouette holds it, as strips of line runs. The cells of a band of feature rows are gathered as
+// one bitset per pixel (the band is sized to a memory budget, so a finer grid streams instead of
+// holding everything), then each pixel's bitset is cut into strips (strip_cover.hpp).
 //
 // The pyramid: besides every pixel's cells, every block of 2 x 2, 4 x 4, ... pixels (aligned to
 // multiples of its size) gets the union of its pixels' cells. Fusion adds a whole block where all
-// its pixels are obstacles: one block's boxes instead of many pixels' mostly repeated ones.
+// its pixels are obstacles: one block's strips instead of many pixels' mostly repeated ones.
 
 #include <cstddef>
 

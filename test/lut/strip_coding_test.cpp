@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "safecell/lut/box_cover.hpp"
 #include "safecell/lut/pixel_to_cells_table.hpp"
+#include "safecell/lut/strip_cover.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {
@@ -56,42 +56,52 @@ CellSet decoded(const PixelToCellsTable& table) {
   return cells;
 }
 
-TEST(BoxCoding, BoxesDecodeToExactlyTheCells) {
+CellSet filled_through_lines(const PixelToCellsTable& table) {
+  CellLines lines(table.axes(), table.cell_count());
+  table.add_cells(0, lines);
+  CellSet cells(table.cell_count());
+  lines.pack_into(cells);
+  return cells;
+}
+
+TEST(StripCoding, StripsDecodeToExactlyTheCells) {
   test::PropertyRun run(60);
   for (int i = 0; i < run.iterations(); ++i) {
     const auto joints = std::uniform_int_distribution<std::uint32_t>(1, 5)(run.rng());
     const CspaceGrid grid = random_grid(run.rng(), joints, 12.0);
     const CellSet cells = random_cells(run.rng(), grid);
     std::vector<std::uint8_t> bytes;
-    const std::size_t boxes = append_boxes(cells, BoxAxes::of(grid), bytes);
+    const std::size_t strips = append_strips(cells, BoxAxes::of(grid), bytes);
     const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
-    EXPECT_EQ(table.total_boxes(), boxes);
+    EXPECT_EQ(table.total_strips(), strips);
     EXPECT_EQ(decoded(table), cells) << grid.cell_count() << " cells";
     CellSet added(grid.cell_count());
     table.add_cells(0, added);
     EXPECT_EQ(added, cells);
-    EXPECT_LE(boxes, cells.count());
+    EXPECT_EQ(filled_through_lines(table), cells);
   }
 }
 
-TEST(BoxCoding, LongRunsAreCutAt255Cells) {
+TEST(StripCoding, LinesLongerThanAWordAndRunsFromCell128On) {
   GridSpec spec;
   spec.m_max_m = 0.01;
   spec.joint_count = 2;
   spec.joints[0] = JointSpec{0.0, 3.0, 1.0, true};  // 300 cells
-  spec.joints[1] = JointSpec{0.0, 1.0, 1.0, true};  // 100 cells
+  spec.joints[1] = JointSpec{0.0, 0.1, 1.0, true};  // 10 cells
   const CspaceGrid grid = CspaceGrid::create(spec).value();
   ASSERT_GT(grid.cells_along(0), 255U);
   CellSet cells(grid.cell_count());
-  cells.fill();
+  cells.set_range(0, 300);                // line 0 whole
+  cells.set_range(300 + 130, 300 + 290);  // line 1: a run from cell 130 on
+  cells.set_range(2700 + 63, 2700 + 65);  // line 9: across a word boundary
   std::vector<std::uint8_t> bytes;
-  const std::size_t boxes = append_boxes(cells, BoxAxes::of(grid), bytes);
-  EXPECT_EQ(boxes, 2U);  // 255 + 45 along joint 0, each 100 deep along joint 1
+  append_strips(cells, BoxAxes::of(grid), bytes);
   const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
   EXPECT_EQ(decoded(table), cells);
+  EXPECT_EQ(filled_through_lines(table), cells);
 }
 
-TEST(BoxCoding, ASetIndependentOfTheTrailingJointsIsCutIntoBoxesSpanningThemWhole) {
+TEST(StripCoding, ASetIndependentOfTheTrailingJointsIsStoredOnItsOwnLevel) {
   GridSpec spec;
   spec.m_max_m = 0.1;
   spec.joint_count = 3;
@@ -108,41 +118,46 @@ TEST(BoxCoding, ASetIndependentOfTheTrailingJointsIsCutIntoBoxesSpanningThemWhol
     const int dy = static_cast<int>(at.along[1]) - 5;
     if (dx * dx + dy * dy <= 9) cells.set(c);
   }
-  cells.set(99 + 100 * 3);  // joint 0 and 1 at their last cell, joint 2 at 3
+  cells.set(99 + 100 * 3);  // joints 0 and 1 at their last cell, joint 2 at 3
   std::vector<std::uint8_t> bytes;
-  append_boxes(cells, axes, bytes);
+  append_strips(cells, axes, bytes);
   const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
   EXPECT_EQ(decoded(table), cells);
-  std::size_t whole = 0;
-  std::size_t single = 0;
-  table.for_each_box(0, [&](CellIndex start, const std::uint8_t* extents) {
-    if (extents[2] == 6) ++whole;
-    if (start == 399 && extents[0] == 1 && extents[1] == 1 && extents[2] == 1) ++single;
-  });
-  EXPECT_EQ(whole + single, table.total_boxes()) << "every disc box spans joint 2 whole";
-  EXPECT_EQ(single, 1U);
+  const LineLevels& levels = table.levels();
+  std::vector<std::size_t> lines;
+  table.for_each_line_run(0, [&](std::size_t line, LineRun) { lines.push_back(line); });
+  // The disc's 7 lines (joint 1 at 2..8) on level 2, the lone cell's line on level 3.
+  ASSERT_EQ(lines.size(), 8U);
+  for (std::size_t k = 0; k < 7; ++k) EXPECT_EQ(lines[k], levels.first_line[2] + 2 + k);
+  EXPECT_EQ(lines[7], levels.first_line[3] + 9 + 10 * 3);
+  CellLines filled(axes, grid.cell_count());
+  EXPECT_EQ(table.add_cells(0, filled), 8U);
 }
 
-TEST(BoxCoding, MalformedTablesAreRefused) {
+TEST(StripCoding, MalformedTablesAreRefused) {
   GridSpec spec;
   spec.m_max_m = 0.1;
   spec.joint_count = 2;
   spec.joints[0] = JointSpec{0.0, 1.0, 1.0, true};
   spec.joints[1] = JointSpec{0.0, 1.0, 1.0, true};
-  const CspaceGrid grid = CspaceGrid::create(spec).value();  // 10 x 10
+  const CspaceGrid grid = CspaceGrid::create(spec).value();  // 10 x 10: lines 0 (level 1), 1..10
   const auto table_of = [&grid](std::vector<std::uint8_t> bytes, std::uint64_t end) {
     return PixelToCellsTable(grid, 1, 1, {0, end}, std::move(bytes));
   };
-  // A box: the lowest cell as a LEB128 difference, then the extents along joints 1 and 2.
-  EXPECT_NO_THROW(table_of({0, 10, 10}, 3));
-  EXPECT_NO_THROW(table_of({0, 1, 1, 0x0B, 9, 9}, 6));             // the second box from cell 11
-  EXPECT_THROW(table_of({5, 6, 1}, 3), std::invalid_argument);     // runs past joint 1's end
-  EXPECT_THROW(table_of({0, 0, 1}, 3), std::invalid_argument);     // an empty extent
-  EXPECT_THROW(table_of({100, 1, 1}, 3), std::invalid_argument);   // starts outside the grid
-  EXPECT_THROW(table_of({0x80, 1, 1}, 3), std::invalid_argument);  // cell number cut off
-  EXPECT_THROW(table_of({0, 10}, 2), std::invalid_argument);       // extents cut off
-  EXPECT_THROW(table_of({0, 10, 10}, 2), std::invalid_argument);   // offsets do not span
-  EXPECT_THROW(PixelToCellsTable(grid, 2, 1, {0, 3}, std::vector<std::uint8_t>{0, 10, 10}),
+  // A strip: its first line as a LEB128 difference, its line count, then per line the first
+  // cell and the length of its run.
+  EXPECT_NO_THROW(table_of({0, 1, 0, 10}, 4));                     // all cells: line 0 of level 1
+  EXPECT_NO_THROW(table_of({1, 2, 0, 5, 3, 2}, 6));                // lines 1 and 2 of level 2
+  EXPECT_NO_THROW(table_of({1, 1, 0, 1, 9, 1, 9, 1}, 8));          // a second strip from line 10
+  EXPECT_THROW(table_of({1, 1, 8, 3}, 4), std::invalid_argument);  // runs past the line
+  EXPECT_THROW(table_of({1, 1, 0, 0}, 4), std::invalid_argument);  // an empty run
+  EXPECT_THROW(table_of({1, 0}, 2), std::invalid_argument);        // no lines
+  EXPECT_THROW(table_of({10, 2, 0, 1, 0, 1}, 6), std::invalid_argument);    // lines past the last
+  EXPECT_THROW(table_of({0x81, 0x00, 1, 0, 1}, 5), std::invalid_argument);  // 1 in two bytes
+  EXPECT_THROW(table_of({1, 2, 0, 5}, 4), std::invalid_argument);           // second run cut off
+  EXPECT_THROW(table_of({0x80}, 1), std::invalid_argument);                 // line number cut off
+  EXPECT_THROW(table_of({1, 1, 0, 1}, 3), std::invalid_argument);           // offsets do not span
+  EXPECT_THROW(PixelToCellsTable(grid, 2, 1, {0, 4}, std::vector<std::uint8_t>{0, 1, 0, 10}),
                std::invalid_argument);  // two pixels, one offset pair
 }
 

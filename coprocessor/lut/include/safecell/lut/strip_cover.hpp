@@ -1,0 +1,26 @@
+#pragma once
+// Cuts a set of C-space cells into the strips of LUT-2 (the coding of pixel_to_cells_table.hpp).
+//
+// Fusion pays per line, and a line of a lower level (line_levels.hpp) stands for all its copies
+// along the trailing axes. So the set is first split by the joints it does not depend on: level d
+// holds the cells of the first d axes whose every cell along the remaining axes is in the set
+// (the robot's upper arm does not move with joints 3 and 4: much of a pixel's set is such a
+// product). In each level, every maximal run of the level's cells in a line becomes a run of
+// LUT-2, unless the level below already covers all of it; the j-th run of consecutive lines goes
+// into one strip.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "safecell/lut/box_rows.hpp"
+#include "safecell/lut/cell_set.hpp"
+
+namespace safecell {
+
+// The strips of `cells` (a set of the grid of `axes`), appended to `strip_bytes`. Returns the
+// number of strips.
+std::size_t append_strips(const CellSet& cells, const BoxAxes& axes,
+                          std::vector<std::uint8_t>& strip_bytes);
+
+}  // namespace safecell
