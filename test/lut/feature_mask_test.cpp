@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "safecell/test/property.hpp"
@@ -112,6 +113,48 @@ TEST(FeatureMask, DilateEqualsGrowingEveryCellByHand) {
     ASSERT_EQ(mask, oracle) << columns << " x " << rows << " grown by " << grow_columns << ", "
                             << grow_rows;
   }
+}
+
+TEST(FeatureMask, FullBlocksAreTheAlignedBlocksAllInTheMask) {
+  test::PropertyRun run(150);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const int columns = std::uniform_int_distribution<int>(1, 140)(run.rng());
+    const int rows = std::uniform_int_distribution<int>(1, 40)(run.rng());
+    const int size = 1 << std::uniform_int_distribution<int>(0, 6)(run.rng());
+    FeatureMask mask(columns, rows);
+    // Mostly set, so that full blocks of every size occur.
+    const double density = std::uniform_real_distribution<double>(0.7, 1.0)(run.rng());
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < columns; ++c) {
+        if (std::bernoulli_distribution(density)(run.rng())) mask.set(c, r);
+      }
+    }
+    std::vector<std::pair<int, int>> expected;
+    for (int y = 0; y * size < rows; ++y) {
+      for (int x = 0; x * size < columns; ++x) {
+        const FeatureRect block{static_cast<std::uint16_t>(x * size),
+                                static_cast<std::uint16_t>(y * size),
+                                static_cast<std::uint16_t>(x * size + size - 1),
+                                static_cast<std::uint16_t>(y * size + size - 1)};
+        if (mask.all_in_rect(block)) expected.emplace_back(x, y);
+      }
+    }
+    std::vector<std::pair<int, int>> found;
+    EXPECT_FALSE(mask.for_each_full_block(size, [&](int x, int y) {
+      found.emplace_back(x, y);
+      return false;
+    }));
+    ASSERT_EQ(found, expected) << columns << " x " << rows << " cells, blocks of " << size;
+    if (!expected.empty()) {
+      int visits = 0;
+      EXPECT_TRUE(mask.for_each_full_block(size, [&](int, int) { return ++visits == 1; }));
+      EXPECT_EQ(visits, 1) << "stops when the visitor says so";
+    }
+  }
+  FeatureMask mask(8, 8);
+  EXPECT_THROW(mask.for_each_full_block(3, [](int, int) { return false; }), std::invalid_argument);
+  EXPECT_THROW(mask.for_each_full_block(128, [](int, int) { return false; }),
+               std::invalid_argument);
 }
 
 TEST(FeatureMask, SetOperations) {

@@ -145,20 +145,18 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
   for (std::size_t level = tables.pixel_blocks.size(); level >= 1; --level) {
     const PixelToCellsTable& blocks = tables.pixel_blocks[level - 1];
     const int size = 1 << level;
-    for (int y = 0; y < blocks.rows(); ++y) {
-      for (int x = 0; x < blocks.columns(); ++x) {
-        const FeatureRect block{static_cast<std::uint16_t>(x * size),
-                                static_cast<std::uint16_t>(y * size),
-                                static_cast<std::uint16_t>(x * size + size - 1),
-                                static_cast<std::uint16_t>(y * size + size - 1)};
-        if (!remaining.all_in_rect(block)) continue;
-        if (add(blocks, static_cast<std::size_t>(y) * static_cast<std::size_t>(blocks.columns()) +
-                            static_cast<std::size_t>(x))) {
-          return true;
-        }
-        remaining.reset_rect(block);
+    const bool saturated = remaining.for_each_full_block(size, [&](int x, int y) {
+      if (add(blocks, static_cast<std::size_t>(y) * static_cast<std::size_t>(blocks.columns()) +
+                          static_cast<std::size_t>(x))) {
+        return true;
       }
-    }
+      remaining.reset_rect(FeatureRect{static_cast<std::uint16_t>(x * size),
+                                       static_cast<std::uint16_t>(y * size),
+                                       static_cast<std::uint16_t>(x * size + size - 1),
+                                       static_cast<std::uint16_t>(y * size + size - 1)});
+      return false;
+    });
+    if (saturated) return true;
   }
   for (int row = 0; row < remaining.rows(); ++row) {
     const std::uint64_t* words = remaining.row_words(row);

@@ -92,6 +92,16 @@ bool FeatureMask::all_in_rect(const FeatureRect& rect) const {
   });
 }
 
+std::uint64_t FeatureMask::block_start_bits(int size) {
+  if (size < 1 || size > 64 || !std::has_single_bit(static_cast<unsigned>(size))) {
+    throw std::invalid_argument("block size must be a power of two 1..64, got " +
+                                std::to_string(size));
+  }
+  std::uint64_t bits = 0;
+  for (int bit = 0; bit < 64; bit += size) bits |= std::uint64_t{1} << bit;
+  return bits;
+}
+
 void FeatureMask::clear() { std::fill(words_.begin(), words_.end(), 0); }
 
 std::size_t FeatureMask::count() const {

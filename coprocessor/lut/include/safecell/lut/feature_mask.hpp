@@ -3,6 +3,8 @@
 // bitmap: one bit per feature cell, rows of 64-bit words. The blocked mask, a robot silhouette
 // (a row of LUT-1) and the pixels of a LUT-2 query are all FeatureMasks.
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
 #include <vector>
@@ -50,6 +52,13 @@ class FeatureMask {
   void reset_rect(const FeatureRect& rect);
   // Whether every cell of the rectangle clipped to the mask is set.
   [[nodiscard]] bool all_in_rect(const FeatureRect& rect) const;
+  // Calls visit(block column, block row) for every block of size x size cells (aligned to
+  // multiples of size, clipped to the mask) whose cells are all set, row by row, until it returns
+  // true; returns whether it did. `size`: a power of two, 1..64 (throws std::invalid_argument
+  // otherwise). Word-parallel: a few word operations per row of blocks. `visit` may clear cells
+  // of the blocks it was given.
+  template <typename Visit>
+  bool for_each_full_block(int size, Visit visit) const;
   void clear();
 
   [[nodiscard]] std::size_t count() const;
@@ -81,6 +90,10 @@ class FeatureMask {
   friend bool operator==(const FeatureMask&, const FeatureMask&) = default;
 
  private:
+  // Bits 0, size, 2 size, ... of a word; throws std::invalid_argument unless size is a power of
+  // two 1..64.
+  static std::uint64_t block_start_bits(int size);
+
   void check_same_shape(const FeatureMask& other) const;
 
   int columns_ = 0;
@@ -88,5 +101,32 @@ class FeatureMask {
   int words_per_row_ = 0;
   std::vector<std::uint64_t> words_;
 };
+
+template <typename Visit>
+bool FeatureMask::for_each_full_block(int size, Visit visit) const {
+  const std::uint64_t block_starts = block_start_bits(size);
+  const int blocks_per_word = 64 / size;
+  for (int block_row = 0; block_row * size < rows_; ++block_row) {
+    const int row_end = std::min(rows_, (block_row + 1) * size);
+    for (int word = 0; word < words_per_row_; ++word) {
+      std::uint64_t all = ~std::uint64_t{0};
+      for (int row = block_row * size; row < row_end; ++row) all &= row_words(row)[word];
+      std::uint64_t starts = block_starts;
+      const int columns_in_word = std::min(64, columns_ - word * 64);
+      if (columns_in_word < 64) {
+        // Cells past the last column count as set (blocks are clipped); no block starts there.
+        all |= ~std::uint64_t{0} << columns_in_word;
+        starts &= (std::uint64_t{1} << columns_in_word) - 1;
+      }
+      // Bit k of `all` becomes the AND of bits k .. k + size - 1.
+      for (int shift = 1; shift < size; shift *= 2) all &= all >> shift;
+      for (std::uint64_t full = all & starts; full != 0; full &= full - 1) {
+        const int block_column = word * blocks_per_word + std::countr_zero(full) / size;
+        if (visit(block_column, block_row)) return true;
+      }
+    }
+  }
+  return false;
+}
 
 }  // namespace safecell
