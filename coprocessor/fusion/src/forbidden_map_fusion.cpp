@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/lut/word_loops.hpp"
+
 namespace safecell {
 
 void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
@@ -23,12 +25,9 @@ void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int
     const std::uint64_t* incoming = set.data();
     // Highest level first, so that each set adds at most one to a cell's count.
     for (std::size_t k = levels; k-- > 1;) {
-      std::uint64_t* level = scratch[k].data();
-      const std::uint64_t* below = scratch[k - 1].data();
-      for (std::size_t w = 0; w < words; ++w) level[w] |= below[w] & incoming[w];
+      or_and_words(scratch[k].data(), scratch[k - 1].data(), incoming, words);
     }
-    std::uint64_t* first = scratch[0].data();
-    for (std::size_t w = 0; w < words; ++w) first[w] |= incoming[w];
+    or_words(scratch[0].data(), incoming, words);
   }
   std::copy(scratch[levels - 1].begin(), scratch[levels - 1].end(), result.begin());
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "safecell/lut/leb128.hpp"
+#include "safecell/lut/word_loops.hpp"
 
 namespace safecell {
 namespace {
@@ -79,7 +80,7 @@ void CellLines::fold() {
     std::uint64_t* up = words_.data() + levels_.first_line[level + 1] * words_per_line_;
     const std::size_t words = levels_.lines_of(level) * words_per_line_;
     for (std::uint32_t copy = 0; copy < axes_.cells[level]; ++copy, up += words) {
-      for (std::size_t w = 0; w < words; ++w) up[w] |= low[w];
+      or_words(up, low, words);
     }
     std::fill(low, low + words, 0);
   }
@@ -99,9 +100,7 @@ bool CellLines::contains(CellLines& other) {
   other.fold();
   const std::span<const std::uint64_t> mine = lines();
   const std::span<const std::uint64_t> theirs = other.lines();
-  std::uint64_t missing = 0;
-  for (std::size_t i = 0; i < mine.size(); ++i) missing |= theirs[i] & ~mine[i];
-  return missing == 0;
+  return !any_missing(mine.data(), theirs.data(), mine.size());
 }
 
 void CellLines::pack_into(CellSet& cells) {

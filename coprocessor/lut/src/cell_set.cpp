@@ -4,6 +4,8 @@
 #include <bit>
 #include <stdexcept>
 
+#include "safecell/lut/cpu_clones.hpp"
+
 namespace safecell {
 namespace {
 
@@ -59,7 +61,7 @@ void CellSet::fill() {
   set_range(0, cell_count_);
 }
 
-std::size_t CellSet::count() const {
+SAFECELL_CPU_CLONES std::size_t CellSet::count() const {
   std::size_t total = 0;
   for (const std::uint64_t word : words_) total += static_cast<std::size_t>(std::popcount(word));
   return total;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/lut/cpu_clones.hpp"
+
 namespace safecell {
 namespace {
 
@@ -104,7 +106,7 @@ std::uint64_t FeatureMask::block_start_bits(int size) {
 
 void FeatureMask::clear() { std::fill(words_.begin(), words_.end(), 0); }
 
-std::size_t FeatureMask::count() const {
+SAFECELL_CPU_CLONES std::size_t FeatureMask::count() const {
   std::size_t total = 0;
   for (const std::uint64_t word : words_) total += static_cast<std::size_t>(std::popcount(word));
   return total;
