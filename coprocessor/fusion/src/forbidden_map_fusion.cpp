@@ -42,13 +42,15 @@ void remove_robot_from_views(const std::vector<CameraObservation>& observations,
                              const RobotSilhouettes& silhouettes, CellIndex robot_cell,
                              const FusionSettings& settings, std::vector<FeatureMask>& robot,
                              std::vector<FeatureMask>& obstacles) {
+  // Every camera's silhouette in one call (model mode computes the robot's envelope once), even
+  // those whose view is unknown: cheaper than asking camera by camera.
+  for (FeatureMask& mask : robot) mask.clear();
+  silhouettes.add_silhouettes(robot_cell, robot);
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {
       obstacles[camera].clear();
       continue;
     }
-    robot[camera].clear();
-    silhouettes.add_silhouette(robot_cell, camera, robot[camera]);
     remove_robot(observations[camera].blocked, robot[camera], settings.removal, obstacles[camera],
                  settings.occlusion_reach);
   }

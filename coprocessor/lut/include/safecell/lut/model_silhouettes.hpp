@@ -30,8 +30,8 @@ class ModelSilhouettes final : public RobotSilhouettes {
 
   [[nodiscard]] std::size_t camera_count() const override { return projections_.size(); }
   void add_silhouette(CellIndex cell, std::size_t camera, FeatureMask& mask) const override;
-  // Every camera at once (the envelope is computed once): masks[camera] |= silhouette.
-  void add_silhouettes(CellIndex cell, std::vector<FeatureMask>& masks) const;
+  // Every camera at once: the envelope is computed once.
+  void add_silhouettes(CellIndex cell, std::vector<FeatureMask>& masks) const override;
 
   [[nodiscard]] const CellEnvelope& envelope() const { return envelope_; }
   [[nodiscard]] const FeatureGrid& feature_grid() const { return feature_grid_; }
