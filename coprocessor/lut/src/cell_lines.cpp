@@ -113,8 +113,29 @@ void CellLines::pack_lines(std::span<const std::uint64_t> lines, CellSet& cells)
     throw std::invalid_argument("cell sets of different grids");
   }
   std::uint64_t* const out = cells.words().data();
-  cells.clear();
   const std::uint32_t line_cells = levels_.line_cells;
+  if (words_per_line_ == 1) {
+    // Each line's bits appended to a word that is written out whenever it fills: every word of
+    // `cells` is written once, no read.
+    const std::uint64_t line_bits = bit_run(0, line_cells);
+    std::uint64_t word = 0;
+    std::uint32_t filled = 0;
+    std::size_t next = 0;
+    for (std::size_t line = 0; line < line_count(); ++line) {
+      const std::uint64_t bits = lines[line] & line_bits;
+      word |= bits << filled;
+      filled += line_cells;
+      if (filled >= 64) {
+        out[next++] = word;
+        filled -= 64;
+        // The line's top `filled` bits did not fit.
+        word = filled == 0 ? 0 : bits >> (line_cells - filled);
+      }
+    }
+    if (filled != 0) out[next] = word;
+    return;
+  }
+  cells.clear();
   for (std::size_t line = 0; line < line_count(); ++line) {
     const std::uint64_t* in = lines.data() + line * words_per_line_;
     std::size_t at = line * line_cells;
