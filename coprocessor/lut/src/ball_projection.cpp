@@ -43,8 +43,40 @@ BallProjection::BallProjection(const PinholeCamera& camera, const FeatureGrid& g
   }
 }
 
+inline std::optional<FeatureRect> BallProjection::cells_of(const PixelBox& box) const {
+  // Pixel centres are integers: pixel column c covers u in [c - 0.5, c + 0.5), so feature
+  // column floor((u + 0.5) / cell width). Clamped before the conversion, so that huge boxes
+  // (a ball at the camera) convert safely; -1 and columns() mark "outside".
+  const auto cell_of = [](double px, double inverse_size, int count) {
+    const double cell = (px + 0.5) * inverse_size;
+    if (cell < 0.0) return -1;
+    if (cell >= count) return count;
+    return static_cast<int>(cell);
+  };
+  if (std::isnan(box.u0 + box.u1 + box.v0 + box.v1)) {  // cannot happen for finite balls; be safe
+    return FeatureRect{0, 0, static_cast<std::uint16_t>(grid_.columns() - 1),
+                       static_cast<std::uint16_t>(grid_.rows() - 1)};
+  }
+  const int col0 = cell_of(box.u0, inverse_cell_width_, grid_.columns());
+  const int col1 = cell_of(box.u1, inverse_cell_width_, grid_.columns());
+  const int row0 = cell_of(box.v0, inverse_cell_height_, grid_.rows());
+  const int row1 = cell_of(box.v1, inverse_cell_height_, grid_.rows());
+  if (col1 < 0 || row1 < 0 || col0 >= grid_.columns() || row0 >= grid_.rows()) return std::nullopt;
+  return FeatureRect{static_cast<std::uint16_t>(std::max(col0, 0)),
+                     static_cast<std::uint16_t>(std::max(row0, 0)),
+                     static_cast<std::uint16_t>(std::min(col1, grid_.columns() - 1)),
+                     static_cast<std::uint16_t>(std::min(row1, grid_.rows() - 1))};
+}
+
 std::optional<FeatureRect> BallProjection::feature_rect(const Ball& ball_in_cell) const {
-  const Eigen::Vector3d centre = rotation_ * ball_in_cell.centre_m + translation_;
+  // Written out: this runs for every ball of the robot's cell in every camera each cycle, and
+  // Eigen's fixed-size product was not inlined here.
+  const Eigen::Vector3d& c = ball_in_cell.centre_m;
+  const Eigen::Matrix3d& r = rotation_;
+  const Eigen::Vector3d centre(
+      r(0, 0) * c.x() + r(0, 1) * c.y() + r(0, 2) * c.z() + translation_.x(),
+      r(1, 0) * c.x() + r(1, 1) * c.y() + r(1, 2) * c.z() + translation_.y(),
+      r(2, 0) * c.x() + r(2, 1) * c.y() + r(2, 2) * c.z() + translation_.z());
   const double radius = ball_in_cell.radius_m;
   if (centre.z() - radius <= kNearPlane_m) {
     if (centre.z() + radius <= kNearPlane_m) return std::nullopt;  // wholly behind the camera
@@ -98,31 +130,6 @@ std::optional<BallProjection::PixelBox> BallProjection::distorted_box(double x0,
   box.u1 += kCurvatureMargin_px;
   box.v1 += kCurvatureMargin_px;
   return box;
-}
-
-std::optional<FeatureRect> BallProjection::cells_of(const PixelBox& box) const {
-  // Pixel centres are integers: pixel column c covers u in [c - 0.5, c + 0.5), so feature
-  // column floor((u + 0.5) / cell width). Clamped before the conversion, so that huge boxes
-  // (a ball at the camera) convert safely; -1 and columns() mark "outside".
-  const auto cell_of = [](double px, double inverse_size, int count) {
-    const double cell = (px + 0.5) * inverse_size;
-    if (cell < 0.0) return -1;
-    if (cell >= count) return count;
-    return static_cast<int>(cell);
-  };
-  if (std::isnan(box.u0 + box.u1 + box.v0 + box.v1)) {  // cannot happen for finite balls; be safe
-    return FeatureRect{0, 0, static_cast<std::uint16_t>(grid_.columns() - 1),
-                       static_cast<std::uint16_t>(grid_.rows() - 1)};
-  }
-  const int col0 = cell_of(box.u0, inverse_cell_width_, grid_.columns());
-  const int col1 = cell_of(box.u1, inverse_cell_width_, grid_.columns());
-  const int row0 = cell_of(box.v0, inverse_cell_height_, grid_.rows());
-  const int row1 = cell_of(box.v1, inverse_cell_height_, grid_.rows());
-  if (col1 < 0 || row1 < 0 || col0 >= grid_.columns() || row0 >= grid_.rows()) return std::nullopt;
-  return FeatureRect{static_cast<std::uint16_t>(std::max(col0, 0)),
-                     static_cast<std::uint16_t>(std::max(row0, 0)),
-                     static_cast<std::uint16_t>(std::min(col1, grid_.columns() - 1)),
-                     static_cast<std::uint16_t>(std::min(row1, grid_.rows() - 1))};
 }
 
 }  // namespace safecell

@@ -1,6 +1,8 @@
 #include "safecell/lut/model_silhouettes.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -11,8 +13,16 @@ namespace {
 constexpr std::size_t kMaxCachedPrefixes = 4096;
 
 void project(const BallProjection& projection, const std::vector<Ball>& balls, FeatureMask& mask) {
-  for (const auto& ball : balls) {
-    if (const auto rect = projection.feature_rect(ball)) mask.set_rect(*rect);
+  // A chunk of balls projected before any is drawn: the projections do not depend on each other,
+  // so the processor overlaps their square roots and divisions.
+  constexpr std::size_t kChunk = 32;
+  std::optional<FeatureRect> rects[kChunk];
+  for (std::size_t first = 0; first < balls.size(); first += kChunk) {
+    const std::size_t count = std::min(kChunk, balls.size() - first);
+    for (std::size_t i = 0; i < count; ++i) rects[i] = projection.feature_rect(balls[first + i]);
+    for (std::size_t i = 0; i < count; ++i) {
+      if (rects[i]) mask.set_rect(*rects[i]);
+    }
   }
 }
 
