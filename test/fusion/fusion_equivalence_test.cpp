@@ -62,6 +62,10 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
   const CspaceGrid& grid = tables.grid;
   const LutSet& luts = tables.luts;
   const ModelSilhouettes& silhouettes = tables.silhouettes;
+  ASSERT_FALSE(luts.cameras[0].left_differences.empty());
+  // The same tables without the differences to the left neighbour: fusion adds whole entries.
+  LutSet whole_entries = luts;
+  for (auto& camera : whole_entries.cameras) camera.left_differences.clear();
   test::PropertyRun run(24);
   std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
   int nonempty = 0;
@@ -80,6 +84,8 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
     const CellSet& fused = fast.fuse(observations, robot_cell);
     const CellSet oracle = dense_oracle(luts, silhouettes, observations, robot_cell, settings);
     ASSERT_EQ(fused, oracle) << "iteration " << i;
+    ForbiddenMapFusion without_differences(whole_entries, silhouettes, settings);
+    ASSERT_EQ(without_differences.fuse(observations, robot_cell), oracle) << "iteration " << i;
     ASSERT_EQ(baseline.fuse(observations, robot_cell), oracle) << "iteration " << i;
     EXPECT_EQ(fast.counts().forbidden_cells, fused.count());
     nonempty += fused.count() > luts.static_cells.count() ? 1 : 0;
@@ -151,6 +157,9 @@ TEST(FusionEquivalence, BadInputsAreRefused) {
   settings.camera_threshold = 0;
   EXPECT_THROW(ForbiddenMapFusion(luts, silhouettes, settings), std::invalid_argument);
   settings.camera_threshold = 2;
+  LutSet misfit = luts;
+  misfit.cameras[1].left_differences[0] = misfit.cameras[1].pixel_blocks[0];  // 32 x 32 entries
+  EXPECT_THROW(ForbiddenMapFusion(misfit, silhouettes, settings), std::invalid_argument);
   ForbiddenMapFusion fusion(luts, silhouettes, settings);
   std::vector<CameraObservation> three(3, CameraObservation{true, FeatureMask(64, 64)});
   EXPECT_THROW(fusion.fuse(three, 0), std::invalid_argument);

@@ -99,7 +99,8 @@ LutSet plane_luts(const CspaceGrid& grid, const std::vector<PlaneCamera>& camera
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     PixelTables pixels = build_pixel_to_cells_tables(tables[c], grid);
     set.cameras.push_back(CameraLuts{"plane" + std::to_string(c), CellToPixelsTable{},
-                                     std::move(pixels.pixels), std::move(pixels.blocks), 0});
+                                     std::move(pixels.pixels), std::move(pixels.blocks), 0,
+                                     std::move(pixels.left_differences)});
   }
   return set;
 }

@@ -82,6 +82,31 @@ TEST(StripCoding, StripsDecodeToExactlyTheCells) {
   }
 }
 
+TEST(StripCoding, WithKnownCellsOnlyWhatTheyLackIsCodedAndNothingOutsideTheSet) {
+  test::PropertyRun run(60);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto joints = std::uniform_int_distribution<std::uint32_t>(1, 5)(run.rng());
+    const CspaceGrid grid = random_grid(run.rng(), joints, 12.0);
+    const CellSet cells = random_cells(run.rng(), grid);
+    CellSet known = random_cells(run.rng(), grid);
+    if (std::bernoulli_distribution(0.5)(run.rng())) known |= cells;  // nothing left to code
+    std::vector<std::uint8_t> bytes;
+    append_strips(cells, BoxAxes::of(grid), bytes, &known);
+    const PixelToCellsTable table(grid, 1, 1, {0, bytes.size()}, bytes);
+    const CellSet difference = decoded(table);
+    CellSet outside = difference;
+    for (std::size_t w = 0; w < outside.words().size(); ++w) {
+      outside.words()[w] &= ~cells.words()[w];
+    }
+    EXPECT_FALSE(outside.any()) << "a run leaves the set";
+    CellSet both = difference;
+    both |= known;
+    CellSet all = cells;
+    all |= known;
+    EXPECT_EQ(both, all) << "with the known cells the difference gives the whole set";
+  }
+}
+
 TEST(StripCoding, LinesLongerThanAWordAndRunsFromCell128On) {
   GridSpec spec;
   spec.m_max_m = 0.01;

@@ -79,6 +79,21 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     if (camera.pixel_to_cells.cell_count() != cells) {
       throw std::invalid_argument("LUT-2 of camera '" + camera.camera + "' is of another grid");
     }
+    if (camera.left_differences.size() > camera.pixel_blocks.size() + 1) {
+      throw std::invalid_argument("LUT-2 of camera '" + camera.camera +
+                                  "' has differences for levels it lacks");
+    }
+    for (std::size_t level = 0; level < camera.left_differences.size(); ++level) {
+      const PixelToCellsTable& entries =
+          level == 0 ? camera.pixel_to_cells : camera.pixel_blocks[level - 1];
+      const PixelToCellsTable& differences = camera.left_differences[level];
+      if (differences.cell_count() != cells || differences.columns() != entries.columns() ||
+          differences.rows() != entries.rows()) {
+        throw std::invalid_argument("LUT-2 differences of camera '" + camera.camera +
+                                    "' at level " + std::to_string(level) +
+                                    " do not fit its entries");
+      }
+    }
     suspicious_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
     observable_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
     for (std::size_t pixel = 0; pixel < camera.pixel_to_cells.pixel_count(); ++pixel) {
@@ -142,19 +157,30 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
     lines_since_check = 0;
     return suspicious.contains(observable_lines_[camera]);
   };
+  const FeatureMask& obstacles = obstacles_[camera];
+  // An entry whose left neighbour (of its level) is all obstacles adds only its difference to it:
+  // the neighbour's cells are in the set already - it came earlier in this level's row order, or
+  // lay inside a coarser block added before (blocks are aligned, so it is wholly in one or not).
+  const auto table_for = [&tables](std::size_t level, bool left_is_in) -> const PixelToCellsTable& {
+    if (left_is_in && level < tables.left_differences.size()) return tables.left_differences[level];
+    return level == 0 ? tables.pixel_to_cells : tables.pixel_blocks[level - 1];
+  };
   // Whole blocks first, the coarsest level first: a block's cells are the union of its pixels'.
   for (std::size_t level = tables.pixel_blocks.size(); level >= 1; --level) {
-    const PixelToCellsTable& blocks = tables.pixel_blocks[level - 1];
     const int size = 1 << level;
+    const auto block_rect = [size](int x, int y) {
+      return FeatureRect{static_cast<std::uint16_t>(x * size), static_cast<std::uint16_t>(y * size),
+                         static_cast<std::uint16_t>(x * size + size - 1),
+                         static_cast<std::uint16_t>(y * size + size - 1)};
+    };
     const bool saturated = remaining.for_each_full_block(size, [&](int x, int y) {
-      if (add(blocks, static_cast<std::size_t>(y) * static_cast<std::size_t>(blocks.columns()) +
-                          static_cast<std::size_t>(x))) {
+      const PixelToCellsTable& table =
+          table_for(level, x > 0 && obstacles.all_in_rect(block_rect(x - 1, y)));
+      if (add(table, static_cast<std::size_t>(y) * static_cast<std::size_t>(table.columns()) +
+                         static_cast<std::size_t>(x))) {
         return true;
       }
-      remaining.reset_rect(FeatureRect{static_cast<std::uint16_t>(x * size),
-                                       static_cast<std::uint16_t>(y * size),
-                                       static_cast<std::uint16_t>(x * size + size - 1),
-                                       static_cast<std::uint16_t>(y * size + size - 1)});
+      remaining.reset_rect(block_rect(x, y));
       return false;
     });
     if (saturated) return true;
@@ -164,7 +190,7 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
     for (int word = 0; word < remaining.words_per_row(); ++word) {
       for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
         const int column = word * 64 + std::countr_zero(bits);
-        if (add(tables.pixel_to_cells,
+        if (add(table_for(0, column > 0 && obstacles.test(column - 1, row)),
                 static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
                     static_cast<std::size_t>(column))) {
           return true;

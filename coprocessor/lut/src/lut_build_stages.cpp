@@ -39,7 +39,8 @@ std::vector<CameraLuts> invert_cell_tables(const CellModel& cell, const CspaceGr
     luts.push_back(
         CameraLuts{cell.cameras[camera].name(),
                    keep_cell_tables ? std::move(cell_tables[camera]) : CellToPixelsTable{},
-                   std::move(pixel_tables.pixels), std::move(pixel_tables.blocks), pairs});
+                   std::move(pixel_tables.pixels), std::move(pixel_tables.blocks), pairs,
+                   std::move(pixel_tables.left_differences)});
     if (!keep_cell_tables) cell_tables[camera] = CellToPixelsTable{};  // free it early
   }
   return luts;

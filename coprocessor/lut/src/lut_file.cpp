@@ -33,6 +33,8 @@ enum class SectionKind : std::uint32_t {
   kCameraStats = 7,
   kBlockOffsets = 8,
   kBlockStrips = 9,
+  kLeftDifferenceOffsets = 10,  // level: 0 for the pixels, l for blocks of 2^l
+  kLeftDifferenceStrips = 11,
 };
 
 // The camera statistics section: covered pairs, strips of the pixels, strips of the blocks.
@@ -208,6 +210,13 @@ void write_lut_file(const std::filesystem::path& path, const LutSet& set) {
       image.add(SectionKind::kBlockOffsets, camera, luts.pixel_blocks[l].offsets(), level);
       image.add(SectionKind::kBlockStrips, camera, luts.pixel_blocks[l].strip_bytes(), level);
     }
+    for (std::size_t l = 0; l < luts.left_differences.size(); ++l) {
+      const auto level = static_cast<std::uint16_t>(l);
+      image.add(SectionKind::kLeftDifferenceOffsets, camera, luts.left_differences[l].offsets(),
+                level);
+      image.add(SectionKind::kLeftDifferenceStrips, camera, luts.left_differences[l].strip_bytes(),
+                level);
+    }
     if (luts.cell_to_pixels.cell_count() > 0) {
       image.add(SectionKind::kCellOffsets, camera, luts.cell_to_pixels.offsets());
       image.add(SectionKind::kCellRects, camera, luts.cell_to_pixels.rects());
@@ -272,6 +281,10 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
       case SectionKind::kPixelStrips:
         camera.pixel_table_bytes += entry.bytes;
         break;
+      case SectionKind::kLeftDifferenceOffsets:
+      case SectionKind::kLeftDifferenceStrips:
+        camera.pixel_table_bytes += entry.bytes;
+        break;
       case SectionKind::kBlockOffsets:
       case SectionKind::kBlockStrips:
         camera.pixel_table_bytes += entry.bytes;
@@ -321,6 +334,8 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     const SectionEntry* stats = nullptr;
     std::vector<const SectionEntry*> block_offsets;  // [level - 1]
     std::vector<const SectionEntry*> block_strips;
+    std::vector<const SectionEntry*> difference_offsets;  // [level]
+    std::vector<const SectionEntry*> difference_strips;
   };
   std::vector<CameraSections> cameras(header.camera_count);
   const SectionEntry* static_cells = nullptr;
@@ -363,6 +378,18 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
                           : sections.block_strips;
         if (slots.size() < entry.level) slots.resize(entry.level, nullptr);
         slots[entry.level - 1U] = &entry;
+        break;
+      }
+      case SectionKind::kLeftDifferenceOffsets:
+      case SectionKind::kLeftDifferenceStrips: {
+        if (entry.level > 16) {
+          throw LutFileError(path, "a difference section of level " + std::to_string(entry.level));
+        }
+        auto& slots = static_cast<SectionKind>(entry.kind) == SectionKind::kLeftDifferenceOffsets
+                          ? sections.difference_offsets
+                          : sections.difference_strips;
+        if (slots.size() <= entry.level) slots.resize(entry.level + 1U, nullptr);
+        slots[entry.level] = &entry;
         break;
       }
       default:
@@ -419,6 +446,21 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
             grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
             section_span<std::uint64_t>(path, *mapping, *sections.block_offsets[l]),
             section_span<std::uint8_t>(path, *mapping, *sections.block_strips[l]), mapping);
+      }
+      if (sections.difference_offsets.size() != sections.difference_strips.size() ||
+          sections.difference_offsets.size() > sections.block_offsets.size() + 1) {
+        throw LutFileError(path, "camera '" + luts.camera + "': difference levels do not pair up");
+      }
+      for (std::size_t l = 0; l < sections.difference_offsets.size(); ++l) {
+        if (sections.difference_offsets[l] == nullptr || sections.difference_strips[l] == nullptr) {
+          throw LutFileError(path, "camera '" + luts.camera + "' lacks the differences of level " +
+                                       std::to_string(l));
+        }
+        const int block = 1 << l;
+        luts.left_differences.emplace_back(
+            grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
+            section_span<std::uint64_t>(path, *mapping, *sections.difference_offsets[l]),
+            section_span<std::uint8_t>(path, *mapping, *sections.difference_strips[l]), mapping);
       }
       if (sections.cell_offsets != nullptr && sections.cell_rects != nullptr) {
         luts.cell_to_pixels = CellToPixelsTable(

@@ -9,26 +9,40 @@
 namespace safecell {
 namespace {
 
-// One level of the pyramid as it is built: strips of its blocks in row-major block order.
+// One level of the pyramid as it is built, in row-major block order: the strips of its blocks
+// and of their differences to the block on their left.
 struct LevelBuild {
   int block = 1;  // pixels per block side
   int columns = 0;
   int rows = 0;
   std::vector<std::uint64_t> offsets{0};
   std::vector<std::uint8_t> strip_bytes;
+  std::vector<std::uint64_t> difference_offsets{0};
+  std::vector<std::uint8_t> difference_bytes;
 };
 
-// Cuts the sets of one band's blocks into strips (in parallel) and appends them to the level.
-void append_band(std::vector<CellSet>& sets, const BoxAxes& axes, unsigned threads,
-                 LevelBuild& level) {
-  std::vector<std::vector<std::uint8_t>> strips(sets.size());
-  parallel_chunks(sets.size(), 16, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) append_strips(sets[i], axes, strips[i]);
-  });
-  for (const auto& block_strips : strips) {
-    level.offsets.push_back(level.offsets.back() + block_strips.size());
-    level.strip_bytes.insert(level.strip_bytes.end(), block_strips.begin(), block_strips.end());
+void append_entries(const std::vector<std::vector<std::uint8_t>>& entries,
+                    std::vector<std::uint64_t>& offsets, std::vector<std::uint8_t>& bytes) {
+  for (const auto& entry : entries) {
+    offsets.push_back(offsets.back() + entry.size());
+    bytes.insert(bytes.end(), entry.begin(), entry.end());
   }
+}
+
+// Cuts the sets of one band's blocks (rows of `columns` blocks) into strips (in parallel) and
+// appends them to the level.
+void append_band(std::vector<CellSet>& sets, std::size_t columns, const BoxAxes& axes,
+                 unsigned threads, LevelBuild& level) {
+  std::vector<std::vector<std::uint8_t>> strips(sets.size());
+  std::vector<std::vector<std::uint8_t>> differences(sets.size());
+  parallel_chunks(sets.size(), 16, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      append_strips(sets[i], axes, strips[i]);
+      if (i % columns != 0) append_strips(sets[i], axes, differences[i], &sets[i - 1]);
+    }
+  });
+  append_entries(strips, level.offsets, level.strip_bytes);
+  append_entries(differences, level.difference_offsets, level.difference_bytes);
 }
 
 }  // namespace
@@ -80,7 +94,7 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
                         }
                       }
                     });
-    append_band(sets, axes, build.threads, levels[0]);
+    append_band(sets, static_cast<std::size_t>(columns), axes, build.threads, levels[0]);
     // Each coarser level: the union of the (up to) four blocks below it.
     int set_columns = columns;
     int set_rows = band_end - band;
@@ -100,7 +114,7 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
       sets = std::move(coarse);
       set_columns = coarse_columns;
       set_rows = coarse_rows;
-      append_band(sets, axes, build.threads, levels[l]);
+      append_band(sets, static_cast<std::size_t>(set_columns), axes, build.threads, levels[l]);
     }
     if (progress) progress(static_cast<double>(band_end) / rows);
   }
@@ -113,6 +127,9 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
     } else {
       tables.blocks.push_back(std::move(table));
     }
+    tables.left_differences.emplace_back(grid, levels[l].columns, levels[l].rows,
+                                         std::move(levels[l].difference_offsets),
+                                         std::move(levels[l].difference_bytes));
   }
   return tables;
 }

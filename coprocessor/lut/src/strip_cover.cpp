@@ -55,20 +55,33 @@ class StripCollector {
 
 }  // namespace
 
-std::size_t append_strips(const CellSet& cells, const BoxAxes& axes,
-                          std::vector<std::uint8_t>& strip_bytes) {
-  const LineLevels levels = LineLevels::of(axes, cells.cell_count());
-  // level_sets[d]: the set over the first d axes whose cells hold along all remaining axes.
-  std::vector<CellSet> level_sets(axes.count + 1);
-  level_sets[axes.count] = cells;
+namespace {
+
+// sets[d] for d = 1..axes.count: the cells over the first d axes whose cells hold along all
+// remaining axes; sets[axes.count] is `cells`.
+std::vector<CellSet> level_sets_of(const CellSet& cells, const BoxAxes& axes) {
+  std::vector<CellSet> sets(axes.count + 1);
+  sets[axes.count] = cells;
   for (std::uint32_t d = axes.count - 1; d >= 1; --d) {
-    level_sets[d] = cells_in_every_slice(level_sets[d + 1], axes.stride[d], axes.cells[d]);
+    sets[d] = cells_in_every_slice(sets[d + 1], axes.stride[d], axes.cells[d]);
   }
+  return sets;
+}
+
+}  // namespace
+
+std::size_t append_strips(const CellSet& cells, const BoxAxes& axes,
+                          std::vector<std::uint8_t>& strip_bytes, const CellSet* known) {
+  const LineLevels levels = LineLevels::of(axes, cells.cell_count());
+  const std::vector<CellSet> level_sets = level_sets_of(cells, axes);
+  const std::vector<CellSet> known_sets =
+      known != nullptr ? level_sets_of(*known, axes) : std::vector<CellSet>{};
   StripCollector collector;
   for (std::uint32_t d = 1; d <= axes.count; ++d) {
     const CellSet& set = level_sets[d];
-    const CellSet covered =
+    CellSet covered =
         d == 1 ? CellSet(set.cell_count()) : repeat_slice(level_sets[d - 1], axes.cells[d - 1]);
+    if (known != nullptr) covered |= known_sets[d];
     for (CellIndex first = set.next_set(0); first < set.cell_count();) {
       const CellIndex line = first / levels.line_cells;
       const CellIndex line_end = (line + 1) * levels.line_cells;

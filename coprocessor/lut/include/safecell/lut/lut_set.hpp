@@ -27,8 +27,12 @@ struct CameraLuts {
   std::vector<PixelToCellsTable> pixel_blocks;
   // (cell, feature cell) pairs the tables hold: what the paper's uncompressed layout stores.
   std::uint64_t covered_pairs = 0;
+  // What each entry adds to the one on its left, per pyramid level: [0] for the pixels, [l] for
+  // the blocks of 2^l x 2^l (pixel_table_builder.hpp). Empty where not built: fusion then adds
+  // whole entries.
+  std::vector<PixelToCellsTable> left_differences;
 
-  // Bytes of LUT-2 with its block levels.
+  // Bytes of LUT-2 with its block levels and differences.
   [[nodiscard]] std::size_t pixel_table_bytes() const;
 };
 

@@ -7,6 +7,10 @@
 // The pyramid: besides every pixel's cells, every block of 2 x 2, 4 x 4, ... pixels (aligned to
 // multiples of its size) gets the union of its pixels' cells. Fusion adds a whole block where all
 // its pixels are obstacles: one block's strips instead of many pixels' mostly repeated ones.
+//
+// The differences: neighbouring pixels see nearly the same cells. Where the pixel (or block) on
+// the left is an obstacle too, fusion has added its cells already and adds only what this one
+// adds to them - typically a third of the lines.
 
 #include <cstddef>
 
@@ -28,6 +32,9 @@ struct PixelTableBuild {
 struct PixelTables {
   PixelToCellsTable pixels;               // LUT-2 proper
   std::vector<PixelToCellsTable> blocks;  // blocks[l - 1]: blocks of 2^l x 2^l pixels
+  // left_differences[l]: per pixel (l = 0) or block of 2^l x 2^l pixels, what its cells add to
+  // those of the one on its left (nothing in the first column).
+  std::vector<PixelToCellsTable> left_differences;
 };
 
 // Throws std::invalid_argument when the table is not of the grid, or for block levels outside
