@@ -279,8 +279,6 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
       }
       case SectionKind::kPixelOffsets:
       case SectionKind::kPixelStrips:
-        camera.pixel_table_bytes += entry.bytes;
-        break;
       case SectionKind::kLeftDifferenceOffsets:
       case SectionKind::kLeftDifferenceStrips:
         camera.pixel_table_bytes += entry.bytes;
