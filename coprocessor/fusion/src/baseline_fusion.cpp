@@ -64,7 +64,7 @@ const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observ
         const std::size_t pixel =
             static_cast<std::size_t>(row) * static_cast<std::size_t>(obstacles.columns()) +
             static_cast<std::size_t>(column);
-        // The pixel's cells each once, as the paper's list holds them: its boxes may overlap,
+        // The pixel's cells each once, as the paper's list holds them: its runs may overlap,
         // so they are gathered first.
         pixel_cells_.clear();
         table.add_cells(pixel, pixel_cells_);

@@ -147,9 +147,9 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
   FeatureMask& remaining = remaining_[camera];
   remaining = obstacles_[camera];
   // Once the set holds every cell the camera can see, no pixel can add to it. Testing that costs
-  // about two passes over the set (fold and compare), so it is done each time boxes of twice as
-  // many lines have been added (tried on the benchmark scenes: checking 4 or 16 times as often
-  // costs more than it saves, half as often gains nothing).
+  // about two passes over the set (fold and compare), so it is done each time twice as many lines
+  // have been written (tried on the benchmark scenes: checking 4 or 16 times as often costs more
+  // than it saves, half as often gains nothing).
   std::size_t lines_since_check = 0;
   const auto add = [&](const PixelToCellsTable& table, std::size_t entry) {
     lines_since_check += table.add_cells(entry, suspicious);

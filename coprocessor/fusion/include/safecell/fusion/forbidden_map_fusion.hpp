@@ -1,7 +1,7 @@
 #pragma once
 // The fusion of paper §4.3-4.4 (DESIGN.md §3, "Fusion"): per camera, remove the robot from the
 // blocked mask (robot_removal.hpp), back-project what remains with LUT-2 into the camera's set of
-// suspicious cells (the union of the boxes of its blocked pixels); a cell is critical when at
+// suspicious cells (the union of the cells of its blocked pixels); a cell is critical when at
 // least `camera_threshold` cameras suspect it; forbidden = critical + static obstacles.
 //
 // Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
