@@ -100,9 +100,11 @@ void CellEnvelope::append_balls(const GridCoords& coords, std::size_t first_body
   const auto centre = grid_.cell_centre(coords);
   if (!centre.ok()) throw std::out_of_range("cell coordinates outside the C-space grid");
   const std::size_t joints = grid_.joint_count();
-  std::vector<double> q(joints);
-  for (std::size_t k = 0; k < joints; ++k) q[k] = centre.value().rad[k];
-  const auto poses = link_poses(robot_, q);
+  // Scratch per thread, so that fusion's cycle allocates nothing after its first.
+  thread_local std::vector<double> q;
+  thread_local std::vector<Eigen::Isometry3d> poses;
+  q.assign(centre.value().rad, centre.value().rad + joints);
+  link_poses(robot_, q, poses);
   if (first_body == 0 && end_body > 0) {
     for (const auto& ball : robot_balls_.base) {
       balls.push_back(Ball{ball.centre_m, ball.radius_m + padding_m_});

@@ -17,18 +17,24 @@ Eigen::Isometry3d joint_motion(const RobotJoint& joint, double q) {
 
 }  // namespace
 
-std::vector<Eigen::Isometry3d> link_poses(const RobotModel& model, const std::vector<double>& q) {
+void link_poses(const RobotModel& model, const std::vector<double>& q,
+                std::vector<Eigen::Isometry3d>& poses) {
   if (q.size() != model.dof()) {
     throw std::invalid_argument("robot '" + model.name + "' has " + std::to_string(model.dof()) +
                                 " joints, got " + std::to_string(q.size()) + " joint values");
   }
-  std::vector<Eigen::Isometry3d> poses;
-  poses.reserve(model.dof());
+  poses.clear();
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   for (std::size_t j = 0; j < model.dof(); ++j) {
     pose = pose * model.joints[j].origin * joint_motion(model.joints[j], q[j]);
     poses.push_back(pose);
   }
+}
+
+std::vector<Eigen::Isometry3d> link_poses(const RobotModel& model, const std::vector<double>& q) {
+  std::vector<Eigen::Isometry3d> poses;
+  poses.reserve(model.dof());
+  link_poses(model, q, poses);
   return poses;
 }
 

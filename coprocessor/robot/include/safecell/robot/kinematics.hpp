@@ -11,6 +11,9 @@ namespace safecell {
 // Poses of links[0..dof-1] in the base frame. Precondition: q.size() == model.dof() (checked,
 // std::invalid_argument).
 std::vector<Eigen::Isometry3d> link_poses(const RobotModel& model, const std::vector<double>& q);
+// The same into `poses` (cleared first): no allocation once it has held dof() poses.
+void link_poses(const RobotModel& model, const std::vector<double>& q,
+                std::vector<Eigen::Isometry3d>& poses);
 
 // Pose of a named frame (e.g. "flange") in the base frame.
 Eigen::Isometry3d frame_pose(const RobotModel& model, const std::vector<double>& q,
