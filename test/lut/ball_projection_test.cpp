@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "../camera/random_camera.hpp"
 #include "safecell/test/property.hpp"
@@ -83,6 +85,38 @@ TEST(BallProjection, BallAtTheCameraCoversTheImageAndBallBehindItNothing) {
   EXPECT_EQ(*whole, (FeatureRect{0, 0, 63, 63}));
   EXPECT_FALSE(projection.feature_rect(Ball{{0, 0, 5.0}, 0.5}).has_value());
   EXPECT_FALSE(projection.feature_rect(Ball{{30, 0, 0}, 0.5}).has_value());  // far off to the side
+}
+
+TEST(BallProjection, ManyBallsAtOnceGiveEachBallsRectangle) {
+  // Batches of every length around the projection's batch size, with balls at and behind the
+  // camera mixed in: each lane must give what the ball alone gives.
+  test::PropertyRun run(60);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const PinholeCamera camera = tiled_camera(run.rng(), i % 2 == 1);
+    const BallProjection projection(camera, grid_of(camera));
+    const Eigen::Vector3d eye = camera.cell_to_camera().inverse().translation();
+    std::vector<Ball> balls;
+    const auto length = static_cast<std::size_t>(test::uniform(run.rng(), 0.0, 40.0));
+    for (std::size_t k = 0; k < length; ++k) {
+      const bool at_camera = test::uniform(run.rng(), 0.0, 1.0) < 0.15;
+      const Eigen::Vector3d offset(test::uniform(run.rng(), -1.5, 1.5),
+                                   test::uniform(run.rng(), -1.5, 1.5),
+                                   test::uniform(run.rng(), -1.0, 2.0));
+      balls.push_back(Ball{at_camera ? Eigen::Vector3d(eye + 0.1 * offset) : offset,
+                           test::uniform(run.rng(), 0.01, 0.6)});
+    }
+    std::vector<std::optional<FeatureRect>> rects(balls.size());
+    projection.feature_rects(balls, rects);
+    for (std::size_t k = 0; k < balls.size(); ++k) {
+      EXPECT_EQ(rects[k], projection.feature_rect(balls[k])) << "ball " << k << " of " << length;
+    }
+  }
+  const PinholeCamera camera =
+      PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, std::numbers::pi / 2, 704, 576);
+  const BallProjection projection(camera, FeatureGrid{});
+  const std::vector<Ball> two(2);
+  std::vector<std::optional<FeatureRect>> one(1);
+  EXPECT_THROW(projection.feature_rects(two, one), std::invalid_argument);
 }
 
 TEST(BallProjection, GridMustTileTheCamera) {

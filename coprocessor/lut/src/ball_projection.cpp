@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/lut/cpu_clones.hpp"
+
 namespace safecell {
 namespace {
 
@@ -14,21 +16,54 @@ constexpr double kNearPlane_m = 1e-3;
 constexpr int kEdgeSamples = 32;
 constexpr double kCurvatureMargin_px = 2.0;
 
-// The normalised coordinate range [lo, hi] of a ball along one image axis, from the tangent
-// planes through the optical centre (see the header). denominator = z^2 - r^2 > 0.
-void tangent_range(double x, double z, double radius, double denominator, double inverse,
-                   double& lo, double& hi) {
-  const double root = radius * std::sqrt(x * x + denominator);
-  lo = (x * z - root) * inverse;
-  hi = (x * z + root) * inverse;
+// Balls projected per call of tangent_ranges: a fixed count, so that the compiler vectorises the
+// loop without a remainder.
+constexpr std::size_t kBatch = 16;
+
+// Per ball of a batch, in the camera frame: the depth range of the ball, and the normalised image
+// coordinate range [x0, x1] x [y0, y1] that its tangent planes through the optical centre bound:
+// x = (x z +- r sqrt(x^2 + z^2 - r^2)) / (z^2 - r^2), the same for y. Lanes of balls that reach
+// the plane z = kNearPlane_m are finite but meaningless.
+struct TangentRanges {
+  double z_near[kBatch];
+  double z_far[kBatch];
+  double x0[kBatch];
+  double x1[kBatch];
+  double y0[kBatch];
+  double y1[kBatch];
+};
+
+// Branch-free, so that several balls share each square root and division instruction (this runs
+// for every ball of the robot's cell in every camera each cycle). The file is compiled without
+// errno for math functions and without trapping comparisons, which lets this loop vectorise.
+SAFECELL_CPU_CLONES void tangent_ranges(const double (&transform)[3][4],
+                                        const Ball* __restrict balls,
+                                        TangentRanges& __restrict ranges) {
+  double m[3][4];  // a copy the stores below cannot alias, so that it stays in registers
+  std::copy(&transform[0][0], &transform[0][0] + 12, &m[0][0]);
+  for (std::size_t i = 0; i < kBatch; ++i) {
+    const Eigen::Vector3d& c = balls[i].centre_m;
+    const double x = m[0][0] * c.x() + m[0][1] * c.y() + m[0][2] * c.z() + m[0][3];
+    const double y = m[1][0] * c.x() + m[1][1] * c.y() + m[1][2] * c.z() + m[1][3];
+    const double z = m[2][0] * c.x() + m[2][1] * c.y() + m[2][2] * c.z() + m[2][3];
+    const double radius = balls[i].radius_m;
+    ranges.z_near[i] = z - radius;
+    ranges.z_far[i] = z + radius;
+    const double denominator = z - radius <= kNearPlane_m ? 1.0 : z * z - radius * radius;
+    const double inverse = 1.0 / denominator;
+    const double root_x = radius * std::sqrt(x * x + denominator);
+    const double root_y = radius * std::sqrt(y * y + denominator);
+    ranges.x0[i] = (x * z - root_x) * inverse;
+    ranges.x1[i] = (x * z + root_x) * inverse;
+    ranges.y0[i] = (y * z - root_y) * inverse;
+    ranges.y1[i] = (y * z + root_y) * inverse;
+  }
 }
 
 }  // namespace
 
 BallProjection::BallProjection(const PinholeCamera& camera, const FeatureGrid& grid)
-    : rotation_(camera.cell_to_camera().linear()),
-      translation_(camera.cell_to_camera().translation()),
-      intrinsics_(camera.intrinsics()),
+    : intrinsics_(camera.intrinsics()),
       grid_(grid),
       distorted_(!(camera.intrinsics().distortion == LensDistortion{})),
       max_radius_sq_(monotonic_radius_sq(camera.intrinsics().distortion)),
@@ -40,6 +75,11 @@ BallProjection::BallProjection(const PinholeCamera& camera, const FeatureGrid& g
         "camera '" + camera.name() + "' has " + std::to_string(intrinsics_.width_px) + " x " +
         std::to_string(intrinsics_.height_px) + " px, the feature grid covers " +
         std::to_string(grid.image_width_px()) + " x " + std::to_string(grid.image_height_px()));
+  }
+  const Eigen::Isometry3d& to_camera = camera.cell_to_camera();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) transform_[r][c] = to_camera.linear()(r, c);
+    transform_[r][3] = to_camera.translation()(r);
   }
 }
 
@@ -69,34 +109,42 @@ inline std::optional<FeatureRect> BallProjection::cells_of(const PixelBox& box) 
 }
 
 std::optional<FeatureRect> BallProjection::feature_rect(const Ball& ball_in_cell) const {
-  // Written out: this runs for every ball of the robot's cell in every camera each cycle, and
-  // Eigen's fixed-size product was not inlined here.
-  const Eigen::Vector3d& c = ball_in_cell.centre_m;
-  const Eigen::Matrix3d& r = rotation_;
-  const Eigen::Vector3d centre(
-      r(0, 0) * c.x() + r(0, 1) * c.y() + r(0, 2) * c.z() + translation_.x(),
-      r(1, 0) * c.x() + r(1, 1) * c.y() + r(1, 2) * c.z() + translation_.y(),
-      r(2, 0) * c.x() + r(2, 1) * c.y() + r(2, 2) * c.z() + translation_.z());
-  const double radius = ball_in_cell.radius_m;
-  if (centre.z() - radius <= kNearPlane_m) {
-    if (centre.z() + radius <= kNearPlane_m) return std::nullopt;  // wholly behind the camera
-    return cells_of(PixelBox{-1e9, -1e9, 1e9, 1e9});
+  std::optional<FeatureRect> rect;
+  feature_rects({&ball_in_cell, 1}, {&rect, 1});
+  return rect;
+}
+
+void BallProjection::feature_rects(std::span<const Ball> balls_in_cell,
+                                   std::span<std::optional<FeatureRect>> rects) const {
+  if (balls_in_cell.size() != rects.size()) {
+    throw std::invalid_argument(std::to_string(balls_in_cell.size()) + " balls, room for " +
+                                std::to_string(rects.size()) + " rectangles");
   }
-  double x0 = 0.0;
-  double x1 = 0.0;
-  double y0 = 0.0;
-  double y1 = 0.0;
-  const double denominator = centre.z() * centre.z() - radius * radius;
-  const double inverse = 1.0 / denominator;
-  tangent_range(centre.x(), centre.z(), radius, denominator, inverse, x0, x1);
-  tangent_range(centre.y(), centre.z(), radius, denominator, inverse, y0, y1);
-  if (!distorted_) {
-    return cells_of(PixelBox{
-        intrinsics_.fx_px * x0 + intrinsics_.cx_px, intrinsics_.fy_px * y0 + intrinsics_.cy_px,
-        intrinsics_.fx_px * x1 + intrinsics_.cx_px, intrinsics_.fy_px * y1 + intrinsics_.cy_px});
+  const PixelBox whole_image{-1e9, -1e9, 1e9, 1e9};
+  Ball padded[kBatch];  // the last, partial batch; the rest are balls of radius 0
+  TangentRanges ranges;
+  for (std::size_t first = 0; first < balls_in_cell.size(); first += kBatch) {
+    const std::size_t count = std::min(kBatch, balls_in_cell.size() - first);
+    const Ball* batch = balls_in_cell.data() + first;
+    if (count < kBatch) batch = std::copy_n(batch, count, padded) - count;
+    tangent_ranges(transform_, batch, ranges);
+    for (std::size_t i = 0; i < count; ++i) {
+      std::optional<FeatureRect>& rect = rects[first + i];
+      if (ranges.z_near[i] <= kNearPlane_m) {
+        rect = ranges.z_far[i] <= kNearPlane_m ? std::nullopt : cells_of(whole_image);
+        continue;
+      }
+      if (!distorted_) {
+        rect = cells_of(PixelBox{intrinsics_.fx_px * ranges.x0[i] + intrinsics_.cx_px,
+                                 intrinsics_.fy_px * ranges.y0[i] + intrinsics_.cy_px,
+                                 intrinsics_.fx_px * ranges.x1[i] + intrinsics_.cx_px,
+                                 intrinsics_.fy_px * ranges.y1[i] + intrinsics_.cy_px});
+        continue;
+      }
+      const auto box = distorted_box(ranges.x0[i], ranges.y0[i], ranges.x1[i], ranges.y1[i]);
+      rect = cells_of(box ? *box : whole_image);
+    }
   }
-  const auto box = distorted_box(x0, y0, x1, y1);
-  return box ? cells_of(*box) : cells_of(PixelBox{-1e9, -1e9, 1e9, 1e9});
 }
 
 std::optional<BallProjection::PixelBox> BallProjection::distorted_box(double x0, double y0,

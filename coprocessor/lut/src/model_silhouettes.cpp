@@ -13,13 +13,12 @@ namespace {
 constexpr std::size_t kMaxCachedPrefixes = 4096;
 
 void project(const BallProjection& projection, const std::vector<Ball>& balls, FeatureMask& mask) {
-  // A chunk of balls projected before any is drawn: the projections do not depend on each other,
-  // so the processor overlaps their square roots and divisions.
-  constexpr std::size_t kChunk = 32;
+  // All balls projected before any is drawn: the projection works on several balls at a time.
+  constexpr std::size_t kChunk = 64;
   std::optional<FeatureRect> rects[kChunk];
   for (std::size_t first = 0; first < balls.size(); first += kChunk) {
     const std::size_t count = std::min(kChunk, balls.size() - first);
-    for (std::size_t i = 0; i < count; ++i) rects[i] = projection.feature_rect(balls[first + i]);
+    projection.feature_rects({balls.data() + first, count}, {rects, count});
     for (std::size_t i = 0; i < count; ++i) {
       if (rects[i]) mask.set_rect(*rects[i]);
     }

@@ -8,6 +8,7 @@
 // leaves the range where the lens model holds, covers the whole image.
 
 #include <optional>
+#include <span>
 
 #include "safecell/camera/feature_grid.hpp"
 #include "safecell/camera/pinhole_camera.hpp"
@@ -24,6 +25,10 @@ class BallProjection {
   // The feature cells the ball's image can touch, clipped to the image; nullopt when the image
   // lies wholly outside it (or behind the camera).
   [[nodiscard]] std::optional<FeatureRect> feature_rect(const Ball& ball_in_cell) const;
+  // feature_rect() of every ball, into the same place of `rects`: the same rectangles, computed
+  // several balls at a time. Throws std::invalid_argument when the spans differ in size.
+  void feature_rects(std::span<const Ball> balls_in_cell,
+                     std::span<std::optional<FeatureRect>> rects) const;
 
  private:
   struct PixelBox {
@@ -33,8 +38,8 @@ class BallProjection {
                                                       double y1) const;
   [[nodiscard]] std::optional<FeatureRect> cells_of(const PixelBox& box) const;
 
-  Eigen::Matrix3d rotation_;
-  Eigen::Vector3d translation_;
+  // Cell frame to camera frame, row by row: x, y, z = the rows applied to (x, y, z, 1).
+  double transform_[3][4] = {};
   CameraIntrinsics intrinsics_;
   FeatureGrid grid_;
   bool distorted_ = false;
