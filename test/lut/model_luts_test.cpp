@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "model_fixture.hpp"
@@ -52,21 +54,78 @@ CellModel* ModelLuts::cell_ = nullptr;
 CspaceGrid* ModelLuts::grid_ = nullptr;
 ModelSilhouettes* ModelLuts::silhouettes_ = nullptr;
 
-TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {
-  test::PropertyRun run(300);
-  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+// Every vertex of the robot's tessellated collision shapes, at random configurations inside
+// random cells, lies in a ball of the cell's envelope.
+void expect_envelope_holds_robot(const CellModel& cell, const CspaceGrid& grid,
+                                 const CellEnvelope& envelope, int iterations) {
+  test::PropertyRun run(iterations);
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
   std::vector<Ball> balls;
   for (int i = 0; i < run.iterations(); ++i) {
-    const CellIndex cell = any_cell(run.rng());
-    silhouettes_->envelope().balls_of_cell(grid_->coords_of(cell).value(), balls);
-    const auto q = test::configuration_in(*grid_, cell, run.rng());
-    for (const auto& shape : collision_shapes_at(*cell_->robot, q)) {
+    const CellIndex index = any_cell(run.rng());
+    envelope.balls_of_cell(grid.coords_of(index).value(), balls);
+    const auto q = test::configuration_in(grid, index, run.rng());
+    for (const auto& shape : collision_shapes_at(*cell.robot, q)) {
       const TriangleMesh mesh = tessellate(shape);
       for (const auto& point : mesh.vertices) {
         const bool inside = std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
           return (point - ball.centre_m).norm() <= ball.radius_m + 1e-9;
         });
-        ASSERT_TRUE(inside) << "cell " << cell << " point " << point.transpose();
+        ASSERT_TRUE(inside) << "cell " << index << " point " << point.transpose();
+      }
+    }
+  }
+}
+
+CellEnvelope envelope_with_head(const CellModel& cell, const CspaceGrid& grid,
+                                std::size_t max_head_prefixes) {
+  const ModelLutOptions options;
+  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
+                      options.padding_m, max_head_prefixes);
+}
+
+TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {
+  expect_envelope_holds_robot(*cell_, *grid_, silhouettes_->envelope(), 300);
+}
+
+TEST_F(ModelLuts, EnvelopeFromTailTablesHoldsTheRobotAnywhereInTheCell) {
+  // Short heads, so that the tables hold the arm from the base joint, the shoulder or the elbow on.
+  for (const std::size_t max_head_prefixes :
+       {std::size_t{1}, std::size_t{300}, std::size_t{3000}}) {
+    const CellEnvelope envelope = envelope_with_head(*cell_, *grid_, max_head_prefixes);
+    ASSERT_GT(envelope.tail_table_balls(), 0u) << "head of up to " << max_head_prefixes;
+    ASSERT_LT(envelope.tail_body(), envelope.body_count());
+    expect_envelope_holds_robot(*cell_, *grid_, envelope, 150);
+  }
+}
+
+TEST_F(ModelLuts, TailTablesGiveFewerOfTheBallsComputedPerCell) {
+  // The tables sweep in another frame, but every ball they keep is one of the balls computed per
+  // cell; swept over the whole range of the wrist joints, many of the hand's balls fall inside
+  // others and are dropped.
+  const CellEnvelope per_cell =
+      envelope_with_head(*cell_, *grid_, std::numeric_limits<std::size_t>::max());
+  EXPECT_EQ(per_cell.tail_table_balls(), 0u);
+  EXPECT_EQ(per_cell.tail_body(), per_cell.body_count());
+  std::vector<Ball> from_tables;
+  std::vector<Ball> computed;
+  for (const std::size_t max_head_prefixes :
+       {std::size_t{1}, std::size_t{300}, std::size_t{3000}}) {
+    const CellEnvelope tabled = envelope_with_head(*cell_, *grid_, max_head_prefixes);
+    ASSERT_GT(tabled.tail_table_balls(), 0u) << "head of up to " << max_head_prefixes;
+    for (const CellIndex index : {CellIndex{0}, grid_->cell_count() / 3, grid_->cell_count() - 1}) {
+      const GridCoords coords = grid_->coords_of(index).value();
+      tabled.balls_of_cell(coords, from_tables);
+      per_cell.balls_of_cell(coords, computed);
+      EXPECT_LT(from_tables.size(), computed.size()) << "cell " << index;
+      for (const Ball& ball : from_tables) {
+        const bool computed_too = std::any_of(computed.begin(), computed.end(), [&](const Ball& b) {
+          return (b.centre_m - ball.centre_m).norm() < 1e-9 &&
+                 std::abs(b.radius_m - ball.radius_m) < 1e-9;
+        });
+        ASSERT_TRUE(computed_too) << "head of up to " << max_head_prefixes << ", cell " << index
+                                  << ": ball at " << ball.centre_m.transpose() << " radius "
+                                  << ball.radius_m;
       }
     }
   }

@@ -1,6 +1,7 @@
 #include "safecell/lut/model_luts.hpp"
 
 #include "safecell/base/fnv1a.hpp"
+#include "safecell/lut/cell_envelope.hpp"
 #include "safecell/lut/static_obstacle_cells.hpp"
 
 namespace safecell {
@@ -36,6 +37,7 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
   Fnv1a64 hash;
   hash.add_u64(grid.fingerprint());
   hash.add_u32(kTableCutVersion);
+  hash.add_u32(CellEnvelope::kMethodVersion);
   hash.add_double(options.ball_radius_m);
   hash.add_double(options.padding_m);
   const RobotModel& robot = *cell.robot;

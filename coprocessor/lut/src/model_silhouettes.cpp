@@ -9,9 +9,6 @@
 namespace safecell {
 namespace {
 
-// Bodies with at most this many joint-cell combinations have their silhouettes cached.
-constexpr std::size_t kMaxCachedPrefixes = 4096;
-
 void project(const BallProjection& projection, const std::vector<Ball>& balls, FeatureMask& mask) {
   // All balls projected before any is drawn: the projection works on several balls at a time.
   constexpr std::size_t kChunk = 64;
@@ -61,7 +58,7 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
       envelope_(checked_envelope(cell, grid, options)) {
   projections_.reserve(cell.cameras.size());
   for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
-  cached_bodies_ = envelope_.first_uncached_body(kMaxCachedPrefixes);
+  cached_bodies_ = envelope_.tail_body();  // the head, per prefix
   cached_.resize(cached_bodies_);
   std::vector<Ball> balls;
   for (std::size_t body = 0; body < cached_bodies_; ++body) {

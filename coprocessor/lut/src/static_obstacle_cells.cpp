@@ -24,15 +24,14 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
   const CspaceGrid& grid = envelope.grid();
   CellSet cells(grid.cell_count());
   if (obstacles.empty()) return cells;
-  // Bodies near the base are tested once per prefix (cell_envelope.hpp).
-  constexpr std::size_t kMaxCachedPrefixes = 4096;
   const auto touches = [&obstacles](const std::vector<Ball>& balls) {
     return std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
       return std::any_of(obstacles.begin(), obstacles.end(),
                          [&](const PlacedShape& obstacle) { return ball_reaches(ball, obstacle); });
     });
   };
-  const std::size_t cached_bodies = envelope.first_uncached_body(kMaxCachedPrefixes);
+  // The head's bodies are tested once per prefix (cell_envelope.hpp).
+  const std::size_t cached_bodies = envelope.tail_body();
   std::vector<std::vector<bool>> cached(cached_bodies);  // [body][prefix]
   for (std::size_t body = 0; body < cached_bodies; ++body) {
     for (std::size_t prefix = 0; prefix < envelope.prefix_count(body); ++prefix) {
