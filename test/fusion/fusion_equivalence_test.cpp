@@ -62,10 +62,16 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
   const CspaceGrid& grid = tables.grid;
   const LutSet& luts = tables.luts;
   const ModelSilhouettes& silhouettes = tables.silhouettes;
-  ASSERT_FALSE(luts.cameras[0].left_differences.empty());
-  // The same tables without the differences to the left neighbour: fusion adds whole entries.
-  LutSet whole_entries = luts;
-  for (auto& camera : whole_entries.cameras) camera.left_differences.clear();
+  ASSERT_FALSE(luts.cameras[0].differences[kLeftNeighbour].empty());
+  ASSERT_FALSE(luts.cameras[0].differences[kUpperNeighbour].empty());
+  // The same tables with the differences to one neighbour only, and with none (fusion then adds
+  // whole entries).
+  std::vector<LutSet> fewer_differences(3, luts);
+  for (auto& camera : fewer_differences[0].cameras) camera.differences[kUpperNeighbour].clear();
+  for (auto& camera : fewer_differences[1].cameras) camera.differences[kLeftNeighbour].clear();
+  for (auto& camera : fewer_differences[2].cameras) {
+    for (auto& neighbour : camera.differences) neighbour.clear();
+  }
   test::PropertyRun run(24);
   std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
   int nonempty = 0;
@@ -84,8 +90,11 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
     const CellSet& fused = fast.fuse(observations, robot_cell);
     const CellSet oracle = dense_oracle(luts, silhouettes, observations, robot_cell, settings);
     ASSERT_EQ(fused, oracle) << "iteration " << i;
-    ForbiddenMapFusion without_differences(whole_entries, silhouettes, settings);
-    ASSERT_EQ(without_differences.fuse(observations, robot_cell), oracle) << "iteration " << i;
+    for (std::size_t set = 0; set < fewer_differences.size(); ++set) {
+      ForbiddenMapFusion with_fewer(fewer_differences[set], silhouettes, settings);
+      ASSERT_EQ(with_fewer.fuse(observations, robot_cell), oracle)
+          << "iteration " << i << ", differences of set " << set;
+    }
     ASSERT_EQ(baseline.fuse(observations, robot_cell), oracle) << "iteration " << i;
     EXPECT_EQ(fast.counts().forbidden_cells, fused.count());
     nonempty += fused.count() > luts.static_cells.count() ? 1 : 0;
@@ -158,7 +167,10 @@ TEST(FusionEquivalence, BadInputsAreRefused) {
   EXPECT_THROW(ForbiddenMapFusion(luts, silhouettes, settings), std::invalid_argument);
   settings.camera_threshold = 2;
   LutSet misfit = luts;
-  misfit.cameras[1].left_differences[0] = misfit.cameras[1].pixel_blocks[0];  // 32 x 32 entries
+  misfit.cameras[1].differences[kLeftNeighbour][0] = misfit.cameras[1].pixel_blocks[0];  // 32 x 32
+  EXPECT_THROW(ForbiddenMapFusion(misfit, silhouettes, settings), std::invalid_argument);
+  misfit = luts;
+  misfit.cameras[2].differences[kUpperNeighbour].push_back(misfit.cameras[2].pixel_to_cells);
   EXPECT_THROW(ForbiddenMapFusion(misfit, silhouettes, settings), std::invalid_argument);
   ForbiddenMapFusion fusion(luts, silhouettes, settings);
   std::vector<CameraObservation> three(3, CameraObservation{true, FeatureMask(64, 64)});

@@ -100,7 +100,7 @@ LutSet plane_luts(const CspaceGrid& grid, const std::vector<PlaneCamera>& camera
     PixelTables pixels = build_pixel_to_cells_tables(tables[c], grid);
     set.cameras.push_back(CameraLuts{"plane" + std::to_string(c), CellToPixelsTable{},
                                      std::move(pixels.pixels), std::move(pixels.blocks), 0,
-                                     std::move(pixels.left_differences)});
+                                     std::move(pixels.differences)});
   }
   return set;
 }

@@ -86,12 +86,14 @@ void expect_same(const LutSet& a, const LutSet& b) {
       EXPECT_TRUE(
           std::ranges::equal(x.pixel_blocks[l].strip_bytes(), y.pixel_blocks[l].strip_bytes()));
     }
-    ASSERT_EQ(x.left_differences.size(), y.left_differences.size());
-    for (std::size_t l = 0; l < x.left_differences.size(); ++l) {
-      EXPECT_TRUE(
-          std::ranges::equal(x.left_differences[l].offsets(), y.left_differences[l].offsets()));
-      EXPECT_TRUE(std::ranges::equal(x.left_differences[l].strip_bytes(),
-                                     y.left_differences[l].strip_bytes()));
+    for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+      ASSERT_EQ(x.differences[n].size(), y.differences[n].size()) << "neighbour " << n;
+      for (std::size_t l = 0; l < x.differences[n].size(); ++l) {
+        EXPECT_TRUE(
+            std::ranges::equal(x.differences[n][l].offsets(), y.differences[n][l].offsets()));
+        EXPECT_TRUE(std::ranges::equal(x.differences[n][l].strip_bytes(),
+                                       y.differences[n][l].strip_bytes()));
+      }
     }
     EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.offsets(), y.cell_to_pixels.offsets()));
     EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.rects(), y.cell_to_pixels.rects()));

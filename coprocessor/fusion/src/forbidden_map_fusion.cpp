@@ -79,19 +79,21 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     if (camera.pixel_to_cells.cell_count() != cells) {
       throw std::invalid_argument("LUT-2 of camera '" + camera.camera + "' is of another grid");
     }
-    if (camera.left_differences.size() > camera.pixel_blocks.size() + 1) {
-      throw std::invalid_argument("LUT-2 of camera '" + camera.camera +
-                                  "' has differences for levels it lacks");
-    }
-    for (std::size_t level = 0; level < camera.left_differences.size(); ++level) {
-      const PixelToCellsTable& entries =
-          level == 0 ? camera.pixel_to_cells : camera.pixel_blocks[level - 1];
-      const PixelToCellsTable& differences = camera.left_differences[level];
-      if (differences.cell_count() != cells || differences.columns() != entries.columns() ||
-          differences.rows() != entries.rows()) {
-        throw std::invalid_argument("LUT-2 differences of camera '" + camera.camera +
-                                    "' at level " + std::to_string(level) +
-                                    " do not fit its entries");
+    for (const auto& neighbour : camera.differences) {
+      if (neighbour.size() > camera.pixel_blocks.size() + 1) {
+        throw std::invalid_argument("LUT-2 of camera '" + camera.camera +
+                                    "' has differences for levels it lacks");
+      }
+      for (std::size_t level = 0; level < neighbour.size(); ++level) {
+        const PixelToCellsTable& entries =
+            level == 0 ? camera.pixel_to_cells : camera.pixel_blocks[level - 1];
+        const PixelToCellsTable& differences = neighbour[level];
+        if (differences.cell_count() != cells || differences.columns() != entries.columns() ||
+            differences.rows() != entries.rows()) {
+          throw std::invalid_argument("LUT-2 differences of camera '" + camera.camera +
+                                      "' at level " + std::to_string(level) +
+                                      " do not fit its entries");
+        }
       }
     }
     suspicious_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
@@ -158,12 +160,21 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
     return suspicious.contains(observable_lines_[camera]);
   };
   const FeatureMask& obstacles = obstacles_[camera];
-  // An entry whose left neighbour (of its level) is all obstacles adds only its difference to it:
-  // the neighbour's cells are in the set already - it came earlier in this level's row order, or
-  // lay inside a coarser block added before (blocks are aligned, so it is wholly in one or not).
-  const auto table_for = [&tables](std::size_t level, bool left_is_in) -> const PixelToCellsTable& {
-    if (left_is_in && level < tables.left_differences.size()) return tables.left_differences[level];
-    return level == 0 ? tables.pixel_to_cells : tables.pixel_blocks[level - 1];
+  // An entry whose left or upper neighbour (of its level) is all obstacles adds only its
+  // difference to it, the shorter where both are: the neighbour's cells are in the set already -
+  // it came earlier in this level's row order, or lay inside a coarser block added before (blocks
+  // are aligned, so it is wholly in one or not).
+  const auto table_for = [&tables](std::size_t level, std::size_t entry, bool left_is_in,
+                                   bool upper_is_in) -> const PixelToCellsTable& {
+    const PixelToCellsTable* cheapest =
+        level == 0 ? &tables.pixel_to_cells : &tables.pixel_blocks[level - 1];
+    const bool is_in[kNeighbourCount] = {left_is_in, upper_is_in};
+    for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+      if (!is_in[n] || level >= tables.differences[n].size()) continue;
+      const PixelToCellsTable& difference = tables.differences[n][level];
+      if (difference.entry_bytes(entry) < cheapest->entry_bytes(entry)) cheapest = &difference;
+    }
+    return *cheapest;
   };
   // Whole blocks first, the coarsest level first: a block's cells are the union of its pixels'.
   for (std::size_t level = tables.pixel_blocks.size(); level >= 1; --level) {
@@ -173,11 +184,12 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
                          static_cast<std::uint16_t>(x * size + size - 1),
                          static_cast<std::uint16_t>(y * size + size - 1)};
     };
+    const auto columns = static_cast<std::size_t>(tables.pixel_blocks[level - 1].columns());
     const bool saturated = remaining.for_each_full_block(size, [&](int x, int y) {
-      const PixelToCellsTable& table =
-          table_for(level, x > 0 && obstacles.all_in_rect(block_rect(x - 1, y)));
-      if (add(table, static_cast<std::size_t>(y) * static_cast<std::size_t>(table.columns()) +
-                         static_cast<std::size_t>(x))) {
+      const std::size_t entry = static_cast<std::size_t>(y) * columns + static_cast<std::size_t>(x);
+      if (add(table_for(level, entry, x > 0 && obstacles.all_in_rect(block_rect(x - 1, y)),
+                        y > 0 && obstacles.all_in_rect(block_rect(x, y - 1))),
+              entry)) {
         return true;
       }
       remaining.reset_rect(block_rect(x, y));
@@ -190,9 +202,12 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
     for (int word = 0; word < remaining.words_per_row(); ++word) {
       for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
         const int column = word * 64 + std::countr_zero(bits);
-        if (add(table_for(0, column > 0 && obstacles.test(column - 1, row)),
-                static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
-                    static_cast<std::size_t>(column))) {
+        const std::size_t entry =
+            static_cast<std::size_t>(row) * static_cast<std::size_t>(luts_.columns) +
+            static_cast<std::size_t>(column);
+        if (add(table_for(0, entry, column > 0 && obstacles.test(column - 1, row),
+                          row > 0 && obstacles.test(column, row - 1)),
+                entry)) {
           return true;
         }
       }

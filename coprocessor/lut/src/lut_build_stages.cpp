@@ -40,7 +40,7 @@ std::vector<CameraLuts> invert_cell_tables(const CellModel& cell, const CspaceGr
         CameraLuts{cell.cameras[camera].name(),
                    keep_cell_tables ? std::move(cell_tables[camera]) : CellToPixelsTable{},
                    std::move(pixel_tables.pixels), std::move(pixel_tables.blocks), pairs,
-                   std::move(pixel_tables.left_differences)});
+                   std::move(pixel_tables.differences)});
     if (!keep_cell_tables) cell_tables[camera] = CellToPixelsTable{};  // free it early
   }
   return luts;

@@ -35,7 +35,15 @@ enum class SectionKind : std::uint32_t {
   kBlockStrips = 9,
   kLeftDifferenceOffsets = 10,  // level: 0 for the pixels, l for blocks of 2^l
   kLeftDifferenceStrips = 11,
+  kUpperDifferenceOffsets = 12,  // level as for the left ones
+  kUpperDifferenceStrips = 13,
 };
+
+// The section kinds of the differences to each neighbour.
+constexpr SectionKind kDifferenceOffsets[kNeighbourCount] = {SectionKind::kLeftDifferenceOffsets,
+                                                             SectionKind::kUpperDifferenceOffsets};
+constexpr SectionKind kDifferenceStrips[kNeighbourCount] = {SectionKind::kLeftDifferenceStrips,
+                                                            SectionKind::kUpperDifferenceStrips};
 
 // The camera statistics section: covered pairs, strips of the pixels, strips of the blocks.
 constexpr std::size_t kCameraStatsWords = 3;
@@ -210,12 +218,12 @@ void write_lut_file(const std::filesystem::path& path, const LutSet& set) {
       image.add(SectionKind::kBlockOffsets, camera, luts.pixel_blocks[l].offsets(), level);
       image.add(SectionKind::kBlockStrips, camera, luts.pixel_blocks[l].strip_bytes(), level);
     }
-    for (std::size_t l = 0; l < luts.left_differences.size(); ++l) {
-      const auto level = static_cast<std::uint16_t>(l);
-      image.add(SectionKind::kLeftDifferenceOffsets, camera, luts.left_differences[l].offsets(),
-                level);
-      image.add(SectionKind::kLeftDifferenceStrips, camera, luts.left_differences[l].strip_bytes(),
-                level);
+    for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+      for (std::size_t l = 0; l < luts.differences[n].size(); ++l) {
+        const auto level = static_cast<std::uint16_t>(l);
+        image.add(kDifferenceOffsets[n], camera, luts.differences[n][l].offsets(), level);
+        image.add(kDifferenceStrips[n], camera, luts.differences[n][l].strip_bytes(), level);
+      }
     }
     if (luts.cell_to_pixels.cell_count() > 0) {
       image.add(SectionKind::kCellOffsets, camera, luts.cell_to_pixels.offsets());
@@ -281,6 +289,8 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
       case SectionKind::kPixelStrips:
       case SectionKind::kLeftDifferenceOffsets:
       case SectionKind::kLeftDifferenceStrips:
+      case SectionKind::kUpperDifferenceOffsets:
+      case SectionKind::kUpperDifferenceStrips:
         camera.pixel_table_bytes += entry.bytes;
         break;
       case SectionKind::kBlockOffsets:
@@ -332,8 +342,8 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     const SectionEntry* stats = nullptr;
     std::vector<const SectionEntry*> block_offsets;  // [level - 1]
     std::vector<const SectionEntry*> block_strips;
-    std::vector<const SectionEntry*> difference_offsets;  // [level]
-    std::vector<const SectionEntry*> difference_strips;
+    std::vector<const SectionEntry*> difference_offsets[kNeighbourCount];  // [neighbour][level]
+    std::vector<const SectionEntry*> difference_strips[kNeighbourCount];
   };
   std::vector<CameraSections> cameras(header.camera_count);
   const SectionEntry* static_cells = nullptr;
@@ -379,13 +389,18 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
         break;
       }
       case SectionKind::kLeftDifferenceOffsets:
-      case SectionKind::kLeftDifferenceStrips: {
+      case SectionKind::kLeftDifferenceStrips:
+      case SectionKind::kUpperDifferenceOffsets:
+      case SectionKind::kUpperDifferenceStrips: {
         if (entry.level > 16) {
           throw LutFileError(path, "a difference section of level " + std::to_string(entry.level));
         }
-        auto& slots = static_cast<SectionKind>(entry.kind) == SectionKind::kLeftDifferenceOffsets
-                          ? sections.difference_offsets
-                          : sections.difference_strips;
+        const auto kind = static_cast<SectionKind>(entry.kind);
+        const bool upper = kind == SectionKind::kUpperDifferenceOffsets ||
+                           kind == SectionKind::kUpperDifferenceStrips;
+        const std::size_t neighbour = upper ? kUpperNeighbour : kLeftNeighbour;
+        auto& slots = kind == kDifferenceOffsets[neighbour] ? sections.difference_offsets[neighbour]
+                                                            : sections.difference_strips[neighbour];
         if (slots.size() <= entry.level) slots.resize(entry.level + 1U, nullptr);
         slots[entry.level] = &entry;
         break;
@@ -445,20 +460,24 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
             section_span<std::uint64_t>(path, *mapping, *sections.block_offsets[l]),
             section_span<std::uint8_t>(path, *mapping, *sections.block_strips[l]), mapping);
       }
-      if (sections.difference_offsets.size() != sections.difference_strips.size() ||
-          sections.difference_offsets.size() > sections.block_offsets.size() + 1) {
-        throw LutFileError(path, "camera '" + luts.camera + "': difference levels do not pair up");
-      }
-      for (std::size_t l = 0; l < sections.difference_offsets.size(); ++l) {
-        if (sections.difference_offsets[l] == nullptr || sections.difference_strips[l] == nullptr) {
-          throw LutFileError(path, "camera '" + luts.camera + "' lacks the differences of level " +
-                                       std::to_string(l));
+      for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+        const auto& offsets = sections.difference_offsets[n];
+        const auto& strips = sections.difference_strips[n];
+        if (offsets.size() != strips.size() || offsets.size() > sections.block_offsets.size() + 1) {
+          throw LutFileError(path,
+                             "camera '" + luts.camera + "': difference levels do not pair up");
         }
-        const int block = 1 << l;
-        luts.left_differences.emplace_back(
-            grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
-            section_span<std::uint64_t>(path, *mapping, *sections.difference_offsets[l]),
-            section_span<std::uint8_t>(path, *mapping, *sections.difference_strips[l]), mapping);
+        for (std::size_t l = 0; l < offsets.size(); ++l) {
+          if (offsets[l] == nullptr || strips[l] == nullptr) {
+            throw LutFileError(path, "camera '" + luts.camera +
+                                         "' lacks the differences of level " + std::to_string(l));
+          }
+          const int block = 1 << l;
+          luts.differences[n].emplace_back(
+              grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
+              section_span<std::uint64_t>(path, *mapping, *offsets[l]),
+              section_span<std::uint8_t>(path, *mapping, *strips[l]), mapping);
+        }
       }
       if (sections.cell_offsets != nullptr && sections.cell_rects != nullptr) {
         luts.cell_to_pixels = CellToPixelsTable(

@@ -15,7 +15,9 @@ const char* to_string(LutSource source) {
 std::size_t CameraLuts::pixel_table_bytes() const {
   std::size_t bytes = pixel_to_cells.bytes();
   for (const auto& level : pixel_blocks) bytes += level.bytes();
-  for (const auto& level : left_differences) bytes += level.bytes();
+  for (const auto& neighbour : differences) {
+    for (const auto& level : neighbour) bytes += level.bytes();
+  }
   return bytes;
 }
 

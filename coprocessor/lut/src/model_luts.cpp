@@ -10,8 +10,8 @@ namespace {
 // How the tables are cut into runs and blocks: tables of another version decode to the same cells
 // but may be slower to fuse, so a cached file of another version is built again. 2: boxes cover
 // (may overlap) instead of partitioning; 3: boxes split by the trailing joints; 4: strips of line
-// runs.
-constexpr std::uint32_t kTableCutVersion = 4;
+// runs; 5: differences to the upper neighbour too.
+constexpr std::uint32_t kTableCutVersion = 5;
 
 void add_pose(Fnv1a64& hash, const Eigen::Isometry3d& pose) {
   for (int row = 0; row < 3; ++row) {

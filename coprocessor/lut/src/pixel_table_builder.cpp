@@ -9,40 +9,53 @@
 namespace safecell {
 namespace {
 
-// One level of the pyramid as it is built, in row-major block order: the strips of its blocks
-// and of their differences to the block on their left.
+// Entries as they are built, in row-major block order.
+struct EntriesBuild {
+  std::vector<std::uint64_t> offsets{0};
+  std::vector<std::uint8_t> strip_bytes;
+};
+
+// One level of the pyramid as it is built: the strips of its blocks and of their differences to
+// their neighbours.
 struct LevelBuild {
   int block = 1;  // pixels per block side
   int columns = 0;
   int rows = 0;
-  std::vector<std::uint64_t> offsets{0};
-  std::vector<std::uint8_t> strip_bytes;
-  std::vector<std::uint64_t> difference_offsets{0};
-  std::vector<std::uint8_t> difference_bytes;
+  EntriesBuild entries;
+  std::array<EntriesBuild, kNeighbourCount> differences;
 };
 
-void append_entries(const std::vector<std::vector<std::uint8_t>>& entries,
-                    std::vector<std::uint64_t>& offsets, std::vector<std::uint8_t>& bytes) {
+void append_entries(const std::vector<std::vector<std::uint8_t>>& entries, EntriesBuild& build) {
   for (const auto& entry : entries) {
-    offsets.push_back(offsets.back() + entry.size());
-    bytes.insert(bytes.end(), entry.begin(), entry.end());
+    build.offsets.push_back(build.offsets.back() + entry.size());
+    build.strip_bytes.insert(build.strip_bytes.end(), entry.begin(), entry.end());
   }
 }
 
 // Cuts the sets of one band's blocks (rows of `columns` blocks) into strips (in parallel) and
-// appends them to the level.
-void append_band(std::vector<CellSet>& sets, std::size_t columns, const BoxAxes& axes,
-                 unsigned threads, LevelBuild& level) {
+// appends them to the level. first_band: the band holds the image's top row.
+void append_band(std::vector<CellSet>& sets, std::size_t columns, bool first_band,
+                 const BoxAxes& axes, unsigned threads, LevelBuild& level) {
   std::vector<std::vector<std::uint8_t>> strips(sets.size());
-  std::vector<std::vector<std::uint8_t>> differences(sets.size());
+  std::array<std::vector<std::vector<std::uint8_t>>, kNeighbourCount> differences;
+  for (auto& entries : differences) entries.resize(sets.size());
   parallel_chunks(sets.size(), 16, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       append_strips(sets[i], axes, strips[i]);
-      if (i % columns != 0) append_strips(sets[i], axes, differences[i], &sets[i - 1]);
+      if (i % columns != 0) {
+        append_strips(sets[i], axes, differences[kLeftNeighbour][i], &sets[i - 1]);
+      }
+      if (i >= columns) {
+        append_strips(sets[i], axes, differences[kUpperNeighbour][i], &sets[i - columns]);
+      } else if (!first_band) {
+        differences[kUpperNeighbour][i] = strips[i];
+      }
     }
   });
-  append_entries(strips, level.offsets, level.strip_bytes);
-  append_entries(differences, level.difference_offsets, level.difference_bytes);
+  append_entries(strips, level.entries);
+  for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+    append_entries(differences[n], level.differences[n]);
+  }
 }
 
 }  // namespace
@@ -94,7 +107,7 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
                         }
                       }
                     });
-    append_band(sets, static_cast<std::size_t>(columns), axes, build.threads, levels[0]);
+    append_band(sets, static_cast<std::size_t>(columns), band == 0, axes, build.threads, levels[0]);
     // Each coarser level: the union of the (up to) four blocks below it.
     int set_columns = columns;
     int set_rows = band_end - band;
@@ -114,22 +127,26 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
       sets = std::move(coarse);
       set_columns = coarse_columns;
       set_rows = coarse_rows;
-      append_band(sets, static_cast<std::size_t>(set_columns), axes, build.threads, levels[l]);
+      append_band(sets, static_cast<std::size_t>(set_columns), band == 0, axes, build.threads,
+                  levels[l]);
     }
     if (progress) progress(static_cast<double>(band_end) / rows);
   }
   PixelTables tables;
   for (std::size_t l = 0; l < levels.size(); ++l) {
-    PixelToCellsTable table(grid, levels[l].columns, levels[l].rows, std::move(levels[l].offsets),
-                            std::move(levels[l].strip_bytes));
+    const auto table_of = [&grid, &level = levels[l]](EntriesBuild& entries) {
+      return PixelToCellsTable(grid, level.columns, level.rows, std::move(entries.offsets),
+                               std::move(entries.strip_bytes));
+    };
+    PixelToCellsTable table = table_of(levels[l].entries);
     if (l == 0) {
       tables.pixels = std::move(table);
     } else {
       tables.blocks.push_back(std::move(table));
     }
-    tables.left_differences.emplace_back(grid, levels[l].columns, levels[l].rows,
-                                         std::move(levels[l].difference_offsets),
-                                         std::move(levels[l].difference_bytes));
+    for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+      tables.differences[n].push_back(table_of(levels[l].differences[n]));
+    }
   }
   return tables;
 }

@@ -6,7 +6,8 @@
 //
 // Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
 // all obstacles adds its precomputed union at once (pixel_table_builder.hpp), and a pixel or block
-// whose left neighbour is all obstacles adds only its difference to it. Runs are filled in
+// whose left or upper neighbour is all obstacles adds only its difference to it (the shorter one
+// where both are). Runs are filled in
 // the line layout (cell_lines.hpp), where the cameras are also counted; only the critical cells
 // are packed. A camera stops early once its set holds every cell it can see.
 //

@@ -9,8 +9,9 @@
 //   section table: per section its kind, camera (or 0xFFFF), pyramid level, offset and size in
 //     bytes.
 //   sections: per camera its name, statistics, LUT-2 offsets and strips for the pixels and for each
-//     block level, the same for their differences to the left neighbour, and (recorded sets)
-//     LUT-1 offsets and rectangles; once, the static-obstacle cells as 64-bit words.
+//     block level, the same for their differences to the left and the upper neighbour, and
+//     (recorded sets) LUT-1 offsets and rectangles; once, the static-obstacle cells as 64-bit
+//     words.
 // A file of another version, another fingerprint or grid, a bad checksum, or sections that do not
 // fit is refused with LutFileError naming the file and what was wrong; nothing is guessed.
 
@@ -26,7 +27,7 @@
 
 namespace safecell {
 
-inline constexpr std::uint32_t kLutFileVersion = 3;
+inline constexpr std::uint32_t kLutFileVersion = 4;
 
 class LutFileError : public std::runtime_error {
  public:

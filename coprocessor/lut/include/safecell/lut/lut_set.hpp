@@ -3,12 +3,14 @@
 // and the static-obstacle cells, stamped with the fingerprint of everything they were built
 // from. Stored in one file (lut_file.hpp).
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "safecell/lut/cell_set.hpp"
 #include "safecell/lut/cell_to_pixels_table.hpp"
+#include "safecell/lut/neighbour.hpp"
 #include "safecell/lut/pixel_to_cells_table.hpp"
 
 namespace safecell {
@@ -27,10 +29,10 @@ struct CameraLuts {
   std::vector<PixelToCellsTable> pixel_blocks;
   // (cell, feature cell) pairs the tables hold: what the paper's uncompressed layout stores.
   std::uint64_t covered_pairs = 0;
-  // What each entry adds to the one on its left, per pyramid level: [0] for the pixels, [l] for
-  // the blocks of 2^l x 2^l (pixel_table_builder.hpp). Empty where not built: fusion then adds
-  // whole entries.
-  std::vector<PixelToCellsTable> left_differences;
+  // What each entry adds to its left or upper neighbour, per pyramid level: [n][0] for the
+  // pixels, [n][l] for the blocks of 2^l x 2^l (pixel_table_builder.hpp). Empty where not built:
+  // fusion then adds whole entries.
+  std::array<std::vector<PixelToCellsTable>, kNeighbourCount> differences;
 
   // Bytes of LUT-2 with its block levels and differences.
   [[nodiscard]] std::size_t pixel_table_bytes() const;

@@ -9,13 +9,15 @@
 // its pixels are obstacles: one block's strips instead of many pixels' mostly repeated ones.
 //
 // The differences: neighbouring pixels see nearly the same cells. Where the pixel (or block) on
-// the left is an obstacle too, fusion has added its cells already and adds only what this one
-// adds to them - typically a third of the lines.
+// the left, or the one above, is an obstacle too, fusion has added its cells already and adds
+// only what this one adds to them - typically a third to a half of the lines.
 
+#include <array>
 #include <cstddef>
 
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/lut/cell_to_pixels_table.hpp"
+#include "safecell/lut/neighbour.hpp"
 #include "safecell/lut/parallel_chunks.hpp"
 #include "safecell/lut/pixel_to_cells_table.hpp"
 
@@ -32,9 +34,10 @@ struct PixelTableBuild {
 struct PixelTables {
   PixelToCellsTable pixels;               // LUT-2 proper
   std::vector<PixelToCellsTable> blocks;  // blocks[l - 1]: blocks of 2^l x 2^l pixels
-  // left_differences[l]: per pixel (l = 0) or block of 2^l x 2^l pixels, what its cells add to
-  // those of the one on its left (nothing in the first column).
-  std::vector<PixelToCellsTable> left_differences;
+  // differences[neighbour][l]: per pixel (l = 0) or block of 2^l x 2^l pixels, what its cells add
+  // to those of its neighbour. Nothing in the first column (left) or row (upper); the whole entry
+  // in the first row of a band but the first (upper: the band above is gone by then).
+  std::array<std::vector<PixelToCellsTable>, kNeighbourCount> differences;
 };
 
 // Throws std::invalid_argument when the table is not of the grid, or for block levels outside

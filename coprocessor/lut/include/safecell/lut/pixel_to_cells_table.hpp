@@ -62,6 +62,10 @@ class PixelToCellsTable {
   // ORs the cells of one pixel into `cells` (precondition: pixel < pixel_count(), cells of the
   // table's grid).
   void add_cells(std::size_t pixel, CellSet& cells) const;
+  // Bytes of one pixel's strips (precondition: pixel < pixel_count()).
+  [[nodiscard]] std::size_t entry_bytes(std::size_t pixel) const {
+    return offsets_[pixel + 1] - offsets_[pixel];
+  }
   // The same into the line layout: the hot loop of fusion. Returns the number of lines written.
   std::size_t add_cells(std::size_t pixel, CellLines& cells) const {
     return cells.add_strips(strip_bytes_.data() + offsets_[pixel],
