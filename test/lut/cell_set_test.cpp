@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -34,13 +35,20 @@ TEST(CellSet, RangesAgreeWithABoolVector) {
     }
     std::size_t total = 0;
     CellIndex expected_next = count;
+    CellIndex expected_clear = count;
     for (std::uint32_t c = count; c-- > 0;) {
       ASSERT_EQ(set.test(c), oracle[c]) << c;
       if (oracle[c]) {
         ++total;
         expected_next = c;
+      } else {
+        expected_clear = c;
       }
       ASSERT_EQ(set.next_set(c), oracle[c] ? c : expected_next) << c;
+      ASSERT_EQ(set.next_clear(c), expected_clear) << c;
+      const auto limit = std::uniform_int_distribution<std::uint32_t>(0, count + 70)(run.rng());
+      ASSERT_EQ(set.next_clear(c, limit), std::min({expected_clear, limit, count}))
+          << c << " before " << limit;
     }
     EXPECT_EQ(set.count(), total);
     EXPECT_EQ(set.any(), total > 0);

@@ -84,17 +84,19 @@ CellIndex CellSet::next_set(CellIndex from) const {
   return std::min(found, cell_count_);
 }
 
-CellIndex CellSet::next_clear(CellIndex from) const {
-  if (from >= cell_count_) return cell_count_;
+CellIndex CellSet::next_clear(CellIndex from, CellIndex limit) const {
+  limit = std::min(limit, cell_count_);
+  if (from >= limit) return limit;
   std::size_t word = from >> 6;
+  const std::size_t last_word = (static_cast<std::size_t>(limit) - 1) >> 6;
   std::uint64_t bits = ~words_[word] & from_bit(from & 63);
   while (bits == 0) {
-    if (++word == words_.size()) return cell_count_;
+    if (++word > last_word) return limit;
     bits = ~words_[word];
   }
   const auto found =
       static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
-  return std::min(found, cell_count_);
+  return std::min(found, limit);
 }
 
 CellSet& CellSet::operator|=(const CellSet& other) {

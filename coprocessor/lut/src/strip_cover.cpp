@@ -85,7 +85,7 @@ std::size_t append_strips(const CellSet& cells, const BoxAxes& axes,
     for (CellIndex first = set.next_set(0); first < set.cell_count();) {
       const CellIndex line = first / levels.line_cells;
       const CellIndex line_end = (line + 1) * levels.line_cells;
-      const CellIndex end = std::min(set.next_clear(first), line_end);
+      const CellIndex end = set.next_clear(first, line_end);
       if (!covered.all_in_range(first, end)) {
         collector.add(levels.first_line[d] + line,
                       LineRun{first - line * levels.line_cells, end - first});

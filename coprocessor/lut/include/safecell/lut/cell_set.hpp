@@ -36,7 +36,9 @@ class CellSet {
   // The first set cell at or after `from`; cell_count() when none.
   [[nodiscard]] CellIndex next_set(CellIndex from) const;
   // The first cell not set at or after `from`; cell_count() when none.
-  [[nodiscard]] CellIndex next_clear(CellIndex from) const;
+  [[nodiscard]] CellIndex next_clear(CellIndex from) const { return next_clear(from, cell_count_); }
+  // The same, looking only before `limit`: min(limit, next_clear(from)), without reading past it.
+  [[nodiscard]] CellIndex next_clear(CellIndex from, CellIndex limit) const;
 
   CellSet& operator|=(const CellSet& other);
   CellSet& operator&=(const CellSet& other);
