@@ -1,8 +1,9 @@
 #pragma once
 // LUT-1 from the robot model: for a C-space cell, the feature cells its envelope
 // (cell_envelope.hpp) covers in each camera, as the union of its balls' image rectangles. The
-// bodies near the base, whose balls depend on few joint-cell combinations, are projected once
-// per combination at construction and reused.
+// envelope's head, whose balls depend on few joint-cell combinations, is projected once per
+// combination at construction and reused; the tail's balls are projected per cell, several at a
+// time (ball_projection.hpp).
 //
 // Used twice: by the model-mode table build (every cell), and by robot removal at run time (one
 // cell per cycle, a few tens of microseconds), so model-mode LUT files need not store LUT-1.
