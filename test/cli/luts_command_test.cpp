@@ -41,6 +41,15 @@ TEST_F(LutsCommand, BuildsOnceAndReportsSizes) {
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("cam3"), std::string::npos);
   EXPECT_NE(info.out.find("model mode"), std::string::npos);
+
+  // A folder that also keeps a file it cannot use (as the cache keeps those of older versions):
+  // the usable one is reported, the other named, and the exit code says so.
+  std::ofstream(out / "0000000000000000.sclut") << std::string(200, 'x');
+  const auto mixed = test::safecell_cli({"luts", "info", out.string(), "--json"});
+  EXPECT_EQ(mixed.exit_code, 2);
+  EXPECT_EQ(nlohmann::json::parse(mixed.out)["cameras"].size(), 4U) << mixed.out;
+  EXPECT_NE(mixed.err.find("skipped"), std::string::npos) << mixed.err;
+  EXPECT_NE(mixed.err.find("0000000000000000.sclut"), std::string::npos) << mixed.err;
 }
 
 TEST_F(LutsCommand, CheckComparesTheRecordedRobotWithTheModel) {

@@ -144,7 +144,7 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   info_command->add_option("path", lut_info.path, "A LUT file (*.sclut) or a folder of them")
       ->required();
   info_command->add_flag("--json", lut_info.json, "Print JSON instead of a table");
-  info_command->callback([&] { action = [&] { run_luts_info(lut_info, out); }; });
+  info_command->callback([&] { action = [&] { exit_code = run_luts_info(lut_info, out, err); }; });
 
   LutsRecordOptions record;
   const auto add_recording_options = [&record](CLI::App* command) {

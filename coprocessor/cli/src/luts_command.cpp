@@ -12,6 +12,7 @@
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cell/cell_model.hpp"
+#include "safecell/cli/cli_app.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/lut/lut_cache.hpp"
 #include "safecell/lut/lut_file.hpp"
@@ -156,17 +157,31 @@ void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ost
   print_summary(report, out);
 }
 
-void run_luts_info(const LutsInfoOptions& options, std::ostream& out) {
+int run_luts_info(const LutsInfoOptions& options, std::ostream& out, std::ostream& err) {
+  const bool folder = fs::is_directory(options.path);
   nlohmann::ordered_json reports = nlohmann::ordered_json::array();
+  std::size_t refused = 0;
   for (const auto& file : lut_files_in(options.path)) {
-    const nlohmann::ordered_json report = summary_json(file, read_lut_file_summary(file));
-    if (options.json) {
-      reports.push_back(report);
-    } else {
-      print_summary(report, out);
+    LutFileSummary summary;
+    try {
+      summary = read_lut_file_summary(file);
+    } catch (const LutFileError& error) {
+      if (!folder) throw;
+      err << "skipped: " << error.what() << '\n';
+      ++refused;
+      continue;
     }
+    reports.push_back(summary_json(file, summary));
   }
-  if (options.json) out << (reports.size() == 1 ? reports[0] : reports).dump(2) << '\n';
+  if (reports.empty()) {
+    throw std::invalid_argument("folder '" + options.path + "' holds no usable LUT file");
+  }
+  if (options.json) {
+    out << (reports.size() == 1 ? reports[0] : reports).dump(2) << '\n';
+  } else {
+    for (const auto& report : reports) print_summary(report, out);
+  }
+  return refused > 0 ? kExitBadInput : 0;
 }
 
 }  // namespace safecell

@@ -23,8 +23,10 @@ struct LutsInfoOptions {
 };
 
 void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err);
-// Throws LutFileError for a file that is not a usable LUT file, std::invalid_argument for a
-// folder without any.
-void run_luts_info(const LutsInfoOptions& options, std::ostream& out);
+// A file: throws LutFileError when it is not a usable LUT file. A folder (such as the cache, which
+// keeps the files of earlier versions and settings): reports every usable file, names each
+// refused one and why on `err`, and returns kExitBadInput when there was one (0 otherwise);
+// throws std::invalid_argument when it holds no usable file at all.
+int run_luts_info(const LutsInfoOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace safecell
