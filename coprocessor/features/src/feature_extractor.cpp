@@ -67,20 +67,12 @@ class FeatureExtractor::Pass {
   void run(const cv::Mat& frame, FeatureImages& images);
 
  private:
-  // One cell's statistics over the rows folded in so far.
-  struct CellSums {
-    std::int64_t sum = 0;
-    std::int64_t square_sum = 0;
-    std::int64_t log_sum = 0;
-    int minimum = 255;
-    int maximum = 0;
-  };
-
   template <typename T>
   T* ring_row(std::vector<T>& ring, int row) const;
   void smooth_frame_row(const cv::Mat& frame, int row);
   void add_row(int y);
   void reset_columns();
+  void reset_cells();
   void fold_columns_into_cells();
   void write_cell_row(int cell_row, FeatureImages& images) const;
 
@@ -103,8 +95,12 @@ class FeatureExtractor::Pass {
   std::vector<std::uint8_t> column_max_;
   std::vector<std::uint16_t> column_log_sum_;
   int partial_rows_ = 0;
-  // ... folded into the cells of the current cell row.
-  std::vector<CellSums> cells_;
+  // ... folded into the cells of the current cell row: their statistics over the rows so far.
+  std::vector<std::int64_t> cell_sum_;
+  std::vector<std::int64_t> cell_square_sum_;
+  std::vector<std::int64_t> cell_log_sum_;
+  std::vector<std::uint8_t> cell_min_;
+  std::vector<std::uint8_t> cell_max_;
   // The scalings' divisors, fixed by the cell size.
   ExactDivisor average_divisor_;
   ExactDivisor variance_divisor_;
@@ -125,7 +121,11 @@ FeatureExtractor::Pass::Pass(const FeatureGrid& grid, std::uint8_t noise_cut_mas
       column_min_(row_length_, 0),
       column_max_(row_length_, 0),
       column_log_sum_(row_length_, 0),
-      cells_(static_cast<std::size_t>(grid.columns())),
+      cell_sum_(static_cast<std::size_t>(grid.columns())),
+      cell_square_sum_(static_cast<std::size_t>(grid.columns())),
+      cell_log_sum_(static_cast<std::size_t>(grid.columns())),
+      cell_min_(static_cast<std::size_t>(grid.columns())),
+      cell_max_(static_cast<std::size_t>(grid.columns())),
       average_divisor_(2 * pixels_per_cell(grid)),
       variance_divisor_(pixels_per_cell(grid) * pixels_per_cell(grid) * kVarianceDivisor),
       edge_count_divisor_(pixels_per_cell(grid) * kEdgeCountDivisor) {}
@@ -135,7 +135,7 @@ void FeatureExtractor::Pass::run(const cv::Mat& frame, FeatureImages& images) {
   for (int row = -2; row <= 1; ++row) smooth_frame_row(frame, row);
   const int cell_height_px = grid_.cell_height_px();
   for (int cell_row = 0; cell_row < grid_.rows(); ++cell_row) {
-    std::fill(cells_.begin(), cells_.end(), CellSums{});
+    reset_cells();
     reset_columns();
     for (int y = cell_row * cell_height_px; y < (cell_row + 1) * cell_height_px; ++y) {
       smooth_frame_row(frame, y + 2);  // S(y + 1), the last row the LoG of row y needs
@@ -186,21 +186,22 @@ void FeatureExtractor::Pass::reset_columns() {
   partial_rows_ = 0;
 }
 
-// The sums run in locals: the byte rows may alias anything, so sums kept in the cells would be
-// stored and reloaded at every column.
+void FeatureExtractor::Pass::reset_cells() {
+  std::fill(cell_sum_.begin(), cell_sum_.end(), 0);
+  std::fill(cell_square_sum_.begin(), cell_square_sum_.end(), 0);
+  std::fill(cell_log_sum_.begin(), cell_log_sum_.end(), 0);
+  std::fill(cell_min_.begin(), cell_min_.end(), 255);
+  std::fill(cell_max_.begin(), cell_max_.end(), 0);
+}
+
+// The column rows are read up to kFoldChunk - 1 entries past the image's width: they are
+// row_length_ long, at least a block more than the width.
 void FeatureExtractor::Pass::fold_columns_into_cells() {
-  const auto cell_width_px = static_cast<std::size_t>(grid_.cell_width_px());
-  for (std::size_t column = 0; column < cells_.size(); ++column) {
-    CellSums cell = cells_[column];
-    for (std::size_t x = column * cell_width_px; x < (column + 1) * cell_width_px; ++x) {
-      cell.sum += column_sum_[x];
-      cell.square_sum += column_square_sum_[x];
-      cell.log_sum += column_log_sum_[x];
-      cell.minimum = std::min<int>(cell.minimum, column_min_[x]);
-      cell.maximum = std::max<int>(cell.maximum, column_max_[x]);
-    }
-    cells_[column] = cell;
-  }
+  static_assert(row_kernels::kFoldChunk <= kBlock);
+  row_kernels::fold_columns(column_sum_.data(), column_square_sum_.data(), column_log_sum_.data(),
+                            column_min_.data(), column_max_.data(), grid_.cell_width_px(),
+                            grid_.columns(), cell_sum_.data(), cell_square_sum_.data(),
+                            cell_log_sum_.data(), cell_min_.data(), cell_max_.data());
   reset_columns();
 }
 
@@ -214,14 +215,14 @@ void FeatureExtractor::Pass::write_cell_row(int cell_row, FeatureImages& images)
   auto* edge_count = images[Feature::kEdgeCount].ptr<std::uint8_t>(cell_row);
   const std::int64_t n = pixels_per_cell(grid_);
   const ContrastTable& contrasts = contrast_table();
-  for (std::size_t column = 0; column < cells_.size(); ++column) {
-    const CellSums& cell = cells_[column];
-    average[column] = clamped_to_feature(average_divisor_.quotient(2 * cell.sum + n));
+  for (std::size_t column = 0; column < cell_sum_.size(); ++column) {
+    const std::int64_t sum = cell_sum_[column];
+    average[column] = clamped_to_feature(average_divisor_.quotient(2 * sum + n));
     variance[column] =
-        clamped_to_feature(variance_divisor_.quotient(n * cell.square_sum - cell.sum * cell.sum));
-    span[column] = static_cast<std::uint8_t>(cell.maximum - cell.minimum);
-    contrast[column] = contrasts[contrast_index(cell.maximum, cell.minimum)];
-    edge_count[column] = clamped_to_feature(edge_count_divisor_.quotient(cell.log_sum));
+        clamped_to_feature(variance_divisor_.quotient(n * cell_square_sum_[column] - sum * sum));
+    span[column] = static_cast<std::uint8_t>(cell_max_[column] - cell_min_[column]);
+    contrast[column] = contrasts[contrast_index(cell_max_[column], cell_min_[column])];
+    edge_count[column] = clamped_to_feature(edge_count_divisor_.quotient(cell_log_sum_[column]));
   }
 }
 

@@ -55,4 +55,45 @@ SAFECELL_ROW_KERNEL void add_row_to_columns(
   }
 }
 
+SAFECELL_ROW_KERNEL void fold_columns(
+    const std::uint16_t* __restrict sum, const std::uint32_t* __restrict square_sum,
+    const std::uint16_t* __restrict log_sum, const std::uint8_t* __restrict minimum,
+    const std::uint8_t* __restrict maximum, int cell_width, int cell_count,
+    std::int64_t* __restrict cell_sum, std::int64_t* __restrict cell_square_sum,
+    std::int64_t* __restrict cell_log_sum, std::uint8_t* __restrict cell_minimum,
+    std::uint8_t* __restrict cell_maximum) {
+  // A cell's columns in chunks of kFoldChunk, read whole and masked past the cell's last column,
+  // so that each chunk is a fixed-length loop the vectoriser turns into a few reductions.
+  for (int cell = 0; cell < cell_count; ++cell) {
+    for (int start = 0; start < cell_width; start += kFoldChunk) {
+      const int count = std::min(kFoldChunk, cell_width - start);
+      const int base = cell * cell_width + start;
+      std::uint32_t chunk_sum = 0;
+      std::uint32_t chunk_square_sum = 0;
+      std::uint32_t chunk_log_sum = 0;
+      std::uint8_t chunk_minimum = 255;
+      std::uint8_t chunk_maximum = 0;
+      // Lanes past the cell's last column: all ones in `outside` (kept out of sums and maxima,
+      // and they raise a minimum to 255, which changes nothing).
+      std::uint32_t outside[kFoldChunk];
+      for (int k = 0; k < kFoldChunk; ++k) outside[k] = 0U - static_cast<std::uint32_t>(k >= count);
+      for (int k = 0; k < kFoldChunk; ++k) {
+        chunk_sum += sum[base + k] & ~outside[k];
+        chunk_square_sum += square_sum[base + k] & ~outside[k];
+        chunk_log_sum += log_sum[base + k] & ~outside[k];
+        const auto low_byte = static_cast<std::uint8_t>(outside[k]);
+        chunk_minimum =
+            std::min(chunk_minimum, static_cast<std::uint8_t>(minimum[base + k] | low_byte));
+        chunk_maximum =
+            std::max(chunk_maximum, static_cast<std::uint8_t>(maximum[base + k] & ~low_byte));
+      }
+      cell_sum[cell] += chunk_sum;
+      cell_square_sum[cell] += chunk_square_sum;
+      cell_log_sum[cell] += chunk_log_sum;
+      cell_minimum[cell] = std::min(cell_minimum[cell], chunk_minimum);
+      cell_maximum[cell] = std::max(cell_maximum[cell], chunk_maximum);
+    }
+  }
+}
+
 }  // namespace safecell::row_kernels

@@ -41,4 +41,20 @@ void add_row_to_columns(const std::uint8_t* __restrict pixels,
                         std::uint8_t* __restrict maximum, std::uint16_t* __restrict log_sum,
                         int count);
 
+// Columns a cell's fold reads at a time (fold_columns).
+inline constexpr int kFoldChunk = 16;
+
+// The per-column partials folded into the cells of a cell row: cells of `cell_width` columns side
+// by side from column 0; per cell the partials of its columns are added to cell_sum,
+// cell_square_sum and cell_log_sum, and cell_minimum and cell_maximum are narrowed. The column
+// rows hold cell_count * cell_width entries and are read up to kFoldChunk - 1 entries past them
+// (which must be readable; their values do not matter). Per chunk the sums stay within 32 bits:
+// 16 columns of kMaxPartialRows rows.
+void fold_columns(const std::uint16_t* __restrict sum, const std::uint32_t* __restrict square_sum,
+                  const std::uint16_t* __restrict log_sum, const std::uint8_t* __restrict minimum,
+                  const std::uint8_t* __restrict maximum, int cell_width, int cell_count,
+                  std::int64_t* __restrict cell_sum, std::int64_t* __restrict cell_square_sum,
+                  std::int64_t* __restrict cell_log_sum, std::uint8_t* __restrict cell_minimum,
+                  std::uint8_t* __restrict cell_maximum);
+
 }  // namespace safecell::row_kernels
