@@ -85,8 +85,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
                                     "' has differences for levels it lacks");
       }
       for (std::size_t level = 0; level < neighbour.size(); ++level) {
-        const PixelToCellsTable& entries =
-            level == 0 ? camera.pixel_to_cells : camera.pixel_blocks[level - 1];
+        const PixelToCellsTable& entries = camera.entries_of_level(level);
         const PixelToCellsTable& differences = neighbour[level];
         if (differences.cell_count() != cells || differences.columns() != entries.columns() ||
             differences.rows() != entries.rows()) {
@@ -166,8 +165,7 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
   // are aligned, so it is wholly in one or not).
   const auto table_for = [&tables](std::size_t level, std::size_t entry, bool left_is_in,
                                    bool upper_is_in) -> const PixelToCellsTable& {
-    const PixelToCellsTable* cheapest =
-        level == 0 ? &tables.pixel_to_cells : &tables.pixel_blocks[level - 1];
+    const PixelToCellsTable* cheapest = &tables.entries_of_level(level);
     const bool is_in[kNeighbourCount] = {left_is_in, upper_is_in};
     for (std::size_t n = 0; n < kNeighbourCount; ++n) {
       if (!is_in[n] || level >= tables.differences[n].size()) continue;
@@ -184,7 +182,7 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
                          static_cast<std::uint16_t>(x * size + size - 1),
                          static_cast<std::uint16_t>(y * size + size - 1)};
     };
-    const auto columns = static_cast<std::size_t>(tables.pixel_blocks[level - 1].columns());
+    const auto columns = static_cast<std::size_t>(tables.entries_of_level(level).columns());
     const bool saturated = remaining.for_each_full_block(size, [&](int x, int y) {
       const std::size_t entry = static_cast<std::size_t>(y) * columns + static_cast<std::size_t>(x);
       if (add(table_for(level, entry, x > 0 && obstacles.all_in_rect(block_rect(x - 1, y)),

@@ -34,6 +34,11 @@ struct CameraLuts {
   // fusion then adds whole entries.
   std::array<std::vector<PixelToCellsTable>, kNeighbourCount> differences;
 
+  // The whole entries of pyramid level `level`: the pixels (0) or the blocks of 2^level a side.
+  // Precondition: level <= pixel_blocks.size().
+  [[nodiscard]] const PixelToCellsTable& entries_of_level(std::size_t level) const {
+    return level == 0 ? pixel_to_cells : pixel_blocks[level - 1];
+  }
   // Bytes of LUT-2 with its block levels and differences.
   [[nodiscard]] std::size_t pixel_table_bytes() const;
 };
