@@ -40,7 +40,8 @@ CellSet dense_oracle(const LutSet& luts, const ModelSilhouettes& silhouettes,
   const std::size_t cameras = observations.size();
   std::vector<FeatureMask> robot(cameras, FeatureMask(luts.columns, luts.rows));
   std::vector<FeatureMask> obstacles(cameras, FeatureMask(luts.columns, luts.rows));
-  remove_robot_from_views(observations, silhouettes, robot_cell, settings, robot, obstacles);
+  remove_robot_from_views(observations, {silhouettes, nullptr, robot_cell, {}}, settings, robot,
+                          obstacles);
   const std::uint32_t cells = luts.static_cells.cell_count();
   CellSet forbidden(cells);
   for (CellIndex cell = 0; cell < cells; ++cell) {

@@ -131,6 +131,10 @@ TEST(GroundTruth, NamesTheFirstObstacleHit) {
                                        sphere(0.1, {0.0, 0.0, 0.25})};
   EXPECT_EQ(truth.first_colliding_obstacle(robot), 1u);
   EXPECT_EQ(truth.first_colliding_obstacle({robot[0]}), 2u);
+  // Every obstacle touched, not only the first.
+  EXPECT_EQ(truth.colliding_obstacles(robot), (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(truth.colliding_obstacles({robot[1]}), (std::vector<std::size_t>{1}));
+  EXPECT_TRUE(truth.colliding_obstacles({sphere(0.1, {0.0, 5.0, 0.0})}).empty());
 }
 
 TEST(GroundTruth, AgainstAStandingHuman) {

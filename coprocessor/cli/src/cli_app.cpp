@@ -217,9 +217,33 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   validate_command->add_option("--lut-cache", validate.lut_cache,
                                "Folder of cached look-up tables; default $SAFECELL_CACHE or "
                                "~/.cache/safecell");
+  validate_command
+      ->add_option("--negative-control", validate.negative_control,
+                   "Break the pipeline on purpose to show the check fails: none, empty-masks, "
+                   "dropped-strip or envelope-removal")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--shard", validate.shard,
+                   "K/N: run only the K-th of N disjoint parts of the scenes (merge the JSON "
+                   "reports with `validate merge`)")
+      ->capture_default_str();
+  validate_command->add_option("--threads", validate.threads, "Worker threads; 0: one per core")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 256));
   validate_command->add_flag("--json", validate.json, "Print one JSON object instead of text");
-  validate_command->callback(
-      [&] { action = [&] { exit_code = run_validate(validate, out, err); }; });
+  validate_command->require_subcommand(0, 1);
+  ValidateMergeOptions merge;
+  CLI::App* merge_command = validate_command->add_subcommand(
+      "merge", "Add the JSON reports of the shards of one run into the report of the whole run");
+  merge_command->add_option("files", merge.files, "JSON reports of `validate --json --shard K/N`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  merge_command->add_flag("--json", merge.json, "Print one JSON object instead of text");
+  merge_command->callback([&] { action = [&] { exit_code = run_validate_merge(merge, out); }; });
+  validate_command->callback([&] {
+    if (merge_command->parsed()) return;
+    action = [&] { exit_code = run_validate(validate, out, err); };
+  });
 
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(

@@ -1,7 +1,10 @@
 #include "safecell/cli/validate_command.hpp"
 
+#include <algorithm>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "lut_loading.hpp"
 #include "progress_bar.hpp"
@@ -11,14 +14,89 @@
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/validation/ground_truth_validation.hpp"
 #include "scene_options.hpp"
+#include "validation_json.hpp"
 
 namespace safecell {
+namespace {
 
 RobotRemoval removal_of(const std::string& text) {
   if (text == "occlusion-aware") return RobotRemoval::kOcclusionAware;
   if (text == "plain") return RobotRemoval::kPlain;
   bad_option("--removal", text, "occlusion-aware or plain");
 }
+
+NegativeControl control_of(const std::string& text) {
+  if (const auto control = negative_control_named(text)) return *control;
+  bad_option("--negative-control", text, "none, empty-masks, dropped-strip or envelope-removal");
+}
+
+Shard shard_of(const std::string& text, std::size_t scenes) {
+  Shard shard;
+  char slash = 0;
+  std::istringstream in(text);
+  if (!(in >> shard.index >> slash >> shard.count) || slash != '/' || !in.eof() ||
+      shard.index < 1 || shard.index > shard.count || shard.count > scenes) {
+    bad_option("--shard", text,
+               "K/N with 1 <= K <= N <= the scenes (" + std::to_string(scenes) + ")");
+  }
+  return shard;
+}
+
+std::string percent(double share) { return fixed(100.0 * share, 2) + " %"; }
+
+void print_report(const ValidationRun& run, const ValidationReport& report, std::ostream& out) {
+  out << "validated " << grouped(report.scenes) << " scenes (seed " << run.seed << ", shards "
+      << run.shards.size() << " of " << run.shard_count << ", " << run.removal
+      << " robot removal, camera threshold " << run.camera_threshold << ")"
+      << (run.negative_control == "none" ? "" : ", NEGATIVE CONTROL " + run.negative_control)
+      << "\n  " << grouped(report.configs_checked)
+      << " configurations against FCL and the renderer's object ids: colliding "
+      << grouped(report.colliding) << ", missed " << report.missed << ", unseen "
+      << grouped(report.unseen) << " (" << grouped(report.unseen_forbidden)
+      << " of them forbidden all the same)\n  unseen because:";
+  for (std::size_t r = 0; r < kUnseenReasonCount; ++r) {
+    out << " " << to_string(static_cast<UnseenReason>(r)) << " "
+        << grouped(report.unseen_reasons[r]);
+  }
+  out << "\n  bodies visible in enough cameras: " << grouped(report.bodies_visible_enough) << " of "
+      << grouped(report.bodies) << "\n  needless stops: " << percent(report.needless_stop_share())
+      << " of " << grouped(report.clear)
+      << " configurations at least 0.5 m from every body; false positives "
+      << percent(report.false_positive_rate()) << " of free ones; forbidden "
+      << percent(report.forbidden_share()) << " of the grid on average\n";
+  using Align = TextTable::Align;
+  TextTable table({{"stratum", Align::kLeft},
+                   {"configs", Align::kRight},
+                   {"colliding", Align::kRight},
+                   {"missed", Align::kRight},
+                   {"unseen", Align::kRight},
+                   {"needless stops", Align::kRight}});
+  for (const auto& [name, counts] : report.strata) {
+    table.add_row({name, grouped(counts.configs), grouped(counts.colliding),
+                   std::to_string(counts.missed), grouped(counts.unseen),
+                   percent(counts.clear == 0 ? 0.0
+                                             : static_cast<double>(counts.clear_forbidden) /
+                                                   static_cast<double>(counts.clear))});
+  }
+  table.print(out);
+  out << "  p99 per cycle: features " << fixed(report.features_ms_p99, 2) << " ms, fusion "
+      << fixed(report.fusion_ms_p99, 2) << " ms\n";
+  for (const auto& missed : report.missed_cases) {
+    out << "  MISSED: scene " << missed.scene << " (" << missed.stratum << "), " << missed.body
+        << " visible in " << missed.cameras_visible << " cameras\n";
+  }
+}
+
+int emit(const ValidationRun& run, const ValidationReport& report, bool json, std::ostream& out) {
+  if (json) {
+    out << validation_json(run, report).dump(2) << '\n';
+  } else {
+    print_report(run, report, out);
+  }
+  return report.missed == 0 ? 0 : kExitValidationFailed;
+}
+
+}  // namespace
 
 int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream& err) {
   const CellModel cell = load_cell_model(load_cell_file_or_default(options.cell_path));
@@ -27,10 +105,12 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   validation.scenes = options.scenes;
   validation.seed = options.seed;
   validation.configurations_per_scene = options.configurations;
-  validation.max_humans = options.humans;
-  validation.max_objects = options.objects;
+  validation.limits = SceneLimits{options.humans, options.objects};
   validation.fusion.camera_threshold = cell.camera_threshold;
   validation.fusion.removal = removal_of(options.removal);
+  validation.negative_control = control_of(options.negative_control);
+  validation.shard = shard_of(options.shard, options.scenes);
+  validation.threads = options.threads;
   const CachedLuts luts = cell_luts(cell, grid, options.lut_cache, err);
   const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
@@ -39,51 +119,54 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
         bar.update("validating scenes", static_cast<double>(done) / static_cast<double>(total));
       });
   bar.finish();
+  const ValidationRun run{options.seed,           options.scenes,          options.configurations,
+                          cell.camera_threshold,  options.removal,         options.negative_control,
+                          validation.shard.count, {validation.shard.index}};
+  return emit(run, report, options.json, out);
+}
 
-  nlohmann::ordered_json json;
-  json["scenes"] = report.scenes;
-  json["objects"] = report.objects;
-  json["configs_checked"] = report.configs_checked;
-  json["colliding"] = report.colliding;
-  json["missed"] = report.missed;
-  json["unseen"] = report.unseen;
-  json["false_positive_rate"] = report.false_positive_rate;
-  json["phantom_cells"] = report.phantom_cells;
-  json["forbidden_share"] = report.forbidden_share;
-  json["features_ms_p99"] = report.features_ms_p99;
-  json["fusion_ms_p99"] = report.fusion_ms_p99;
-  json["seed"] = options.seed;
-  json["removal"] = options.removal;
-  nlohmann::ordered_json cases = nlohmann::ordered_json::array();
-  for (const auto& missed : report.missed_cases) {
-    cases.push_back({{"scene", missed.scene},
-                     {"q_rad", missed.q},
-                     {"obstacle", missed.obstacle},
-                     {"cameras_seeing", missed.cameras_seeing}});
-  }
-  json["missed_cases"] = std::move(cases);
-  if (options.json) {
-    out << json.dump(2) << '\n';
-  } else {
-    out << "validated " << report.scenes << " scenes (with " << report.objects
-        << " boxes among the humans), " << grouped(report.configs_checked)
-        << " configurations against FCL ground truth (seed " << options.seed << ", "
-        << options.removal << " robot removal)\n"
-        << "  colliding " << grouped(report.colliding) << ", missed " << report.missed
-        << ", with a human or object fewer than " << cell.camera_threshold << " cameras saw "
-        << report.unseen << "\n"
-        << "  false positives " << fixed(100.0 * report.false_positive_rate, 1)
-        << " % of free configurations, forbidden " << fixed(100.0 * report.forbidden_share, 1)
-        << " % of the grid on average, phantom cells " << fixed(report.phantom_cells, 0)
-        << " per scene\n"
-        << "  p99 per cycle: features " << fixed(report.features_ms_p99, 2) << " ms, fusion "
-        << fixed(report.fusion_ms_p99, 2) << " ms\n";
-    for (const auto& missed : report.missed_cases) {
-      out << "  MISSED: scene " << missed.scene << ", " << missed.obstacle << " (seen by "
-          << missed.cameras_seeing << " cameras)\n";
+int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
+  if (options.files.empty()) bad_option("merge", "", "at least one report file");
+  ValidationRun merged_run;
+  ValidationReport merged;
+  for (std::size_t f = 0; f < options.files.size(); ++f) {
+    const std::string& path = options.files[f];
+    std::ifstream in(path);
+    if (!in) throw std::invalid_argument(path + ": cannot be read");
+    nlohmann::json json;
+    try {
+      json = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& error) {
+      throw std::invalid_argument(path + ": not JSON (" + error.what() + ")");
     }
+    ValidationRun run;
+    ValidationReport report;
+    read_validation_json(json, path, run, report);
+    if (f == 0) {
+      merged_run = run;
+      merged_run.shards.clear();
+    } else if (run.seed != merged_run.seed || run.scenes != merged_run.scenes ||
+               run.configurations_per_scene != merged_run.configurations_per_scene ||
+               run.camera_threshold != merged_run.camera_threshold ||
+               run.removal != merged_run.removal ||
+               run.negative_control != merged_run.negative_control ||
+               run.shard_count != merged_run.shard_count) {
+      throw std::invalid_argument(path + ": a shard of another run than " + options.files[0] +
+                                  " (seed, scenes, configs, threshold, removal, control and "
+                                  "shard count must agree)");
+    }
+    for (const std::size_t shard : run.shards) {
+      if (std::find(merged_run.shards.begin(), merged_run.shards.end(), shard) !=
+          merged_run.shards.end()) {
+        throw std::invalid_argument(path + ": shard " + std::to_string(shard) +
+                                    " is in an earlier file already");
+      }
+      merged_run.shards.push_back(shard);
+    }
+    merged += report;
   }
-  return report.missed == 0 ? 0 : kExitValidationFailed;
+  std::sort(merged_run.shards.begin(), merged_run.shards.end());
+  return emit(merged_run, merged, options.json, out);
 }
 
 }  // namespace safecell

@@ -47,7 +47,8 @@ const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observ
     throw std::invalid_argument("baseline fusion: wrong number of camera observations");
   }
   if (robot_cell >= counters_.size()) throw std::out_of_range("robot cell outside the grid");
-  remove_robot_from_views(observations, silhouettes_, robot_cell, settings_, robot_, obstacles_);
+  remove_robot_from_views(observations, {silhouettes_, nullptr, robot_cell, {}}, settings_, robot_,
+                          obstacles_);
   std::fill(counters_.begin(), counters_.end(), 0);
   std::fill(stamps_.begin(), stamps_.end(), 0);
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {

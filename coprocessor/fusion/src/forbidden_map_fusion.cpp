@@ -39,13 +39,17 @@ CellSet observable_cells(const PixelToCellsTable& table) {
 }
 
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
-                             const RobotSilhouettes& silhouettes, CellIndex robot_cell,
-                             const FusionSettings& settings, std::vector<FeatureMask>& robot,
-                             std::vector<FeatureMask>& obstacles) {
-  // Every camera's silhouette in one call (model mode computes the robot's envelope once), even
+                             const RobotAtExposure& where, const FusionSettings& settings,
+                             std::vector<FeatureMask>& robot, std::vector<FeatureMask>& obstacles) {
+  // Every camera's silhouette in one call (the robot's balls or envelope are placed once), even
   // those whose view is unknown: cheaper than asking camera by camera.
   for (FeatureMask& mask : robot) mask.clear();
-  silhouettes.add_silhouettes(robot_cell, robot);
+  if (settings.removal == RobotRemoval::kOcclusionAware && where.at_configuration != nullptr &&
+      !where.q.empty()) {
+    where.at_configuration->add_silhouettes(where.q, robot);
+  } else {
+    where.cell_silhouettes.add_silhouettes(where.cell, robot);
+  }
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {
       obstacles[camera].clear();
@@ -57,8 +61,12 @@ void remove_robot_from_views(const std::vector<CameraObservation>& observations,
 }
 
 ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouettes& silhouettes,
-                                       const FusionSettings& settings)
-    : luts_(luts), silhouettes_(silhouettes), settings_(settings) {
+                                       const FusionSettings& settings,
+                                       const ConfigurationSilhouettes* at_configuration)
+    : luts_(luts),
+      silhouettes_(silhouettes),
+      at_configuration_(at_configuration),
+      settings_(settings) {
   if (silhouettes.camera_count() != luts.cameras.size()) {
     throw std::invalid_argument("robot silhouettes for " +
                                 std::to_string(silhouettes.camera_count()) +
@@ -69,6 +77,11 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     throw std::invalid_argument("camera threshold " + std::to_string(settings.camera_threshold) +
                                 " outside 1.." + std::to_string(luts.cameras.size()) +
                                 " (the number of cameras)");
+  }
+  if (at_configuration != nullptr && at_configuration->camera_count() != luts.cameras.size()) {
+    throw std::invalid_argument("robot silhouettes at the configuration for " +
+                                std::to_string(at_configuration->camera_count()) +
+                                " cameras, tables for " + std::to_string(luts.cameras.size()));
   }
   if (settings.occlusion_reach < 0) {
     throw std::invalid_argument("occlusion reach must be >= 0 feature cells, got " +
@@ -215,12 +228,13 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
 }
 
 const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& observations,
-                                        CellIndex robot_cell) {
+                                        CellIndex robot_cell, std::span<const double> q) {
   check(observations);
   if (robot_cell >= critical_.cell_count()) {
     throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
   }
-  remove_robot_from_views(observations, silhouettes_, robot_cell, settings_, robot_, obstacles_);
+  remove_robot_from_views(observations, {silhouettes_, at_configuration_, robot_cell, q}, settings_,
+                          robot_, obstacles_);
   camera_lines_.clear();
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
     if (!observations[camera].known) {

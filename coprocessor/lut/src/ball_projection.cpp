@@ -180,4 +180,19 @@ std::optional<BallProjection::PixelBox> BallProjection::distorted_box(double x0,
   return box;
 }
 
+void add_ball_rects(const BallProjection& projection, std::span<const Ball> balls_in_cell,
+                    FeatureMask& mask) {
+  // All balls of a chunk projected before any is drawn: the projection works on several balls at
+  // a time.
+  constexpr std::size_t kChunk = 64;
+  std::optional<FeatureRect> rects[kChunk];
+  for (std::size_t first = 0; first < balls_in_cell.size(); first += kChunk) {
+    const std::size_t count = std::min(kChunk, balls_in_cell.size() - first);
+    projection.feature_rects(balls_in_cell.subspan(first, count), {rects, count});
+    for (std::size_t i = 0; i < count; ++i) {
+      if (rects[i]) mask.set_rect(*rects[i]);
+    }
+  }
+}
+
 }  // namespace safecell

@@ -9,19 +9,6 @@
 namespace safecell {
 namespace {
 
-void project(const BallProjection& projection, const std::vector<Ball>& balls, FeatureMask& mask) {
-  // All balls projected before any is drawn: the projection works on several balls at a time.
-  constexpr std::size_t kChunk = 64;
-  std::optional<FeatureRect> rects[kChunk];
-  for (std::size_t first = 0; first < balls.size(); first += kChunk) {
-    const std::size_t count = std::min(kChunk, balls.size() - first);
-    projection.feature_rects({balls.data() + first, count}, {rects, count});
-    for (std::size_t i = 0; i < count; ++i) {
-      if (rects[i]) mask.set_rect(*rects[i]);
-    }
-  }
-}
-
 // The envelope of the cell's robot, after the checks (so that no argument touches a missing
 // robot before they ran).
 CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
@@ -68,7 +55,7 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
       envelope_.append_body_balls(body, prefix, balls);
       cached_[body][prefix].assign(projections_.size(), FeatureMask(feature_grid_));
       for (std::size_t camera = 0; camera < projections_.size(); ++camera) {
-        project(projections_[camera], balls, cached_[body][prefix][camera]);
+        add_ball_rects(projections_[camera], balls, cached_[body][prefix][camera]);
       }
     }
   }
@@ -101,7 +88,7 @@ void ModelSilhouettes::add_cell(CellIndex cell, std::size_t first_camera, std::s
     for (std::size_t body = 0; body < cached_bodies_; ++body) {
       mask |= cached_[body][envelope_.prefix_of(coords.value(), body)][camera];
     }
-    project(projections_[camera], balls, mask);
+    add_ball_rects(projections_[camera], balls, mask);
   }
 }
 

@@ -5,9 +5,22 @@
 #include <string>
 
 #include "safecell/features/blocked_mask.hpp"
+#include "safecell/lut/model_silhouettes.hpp"
 
 namespace safecell {
 namespace {
+
+// The robot's silhouette at its configuration, for occlusion-aware removal; none when the cell
+// has no robot model or its motion within the sync error is unbounded.
+std::optional<ConfigurationSilhouettes> silhouettes_at_configuration(
+    const CellModel& cell, const CspaceGrid& grid, const FusionSettings& settings) {
+  if (settings.removal != RobotRemoval::kOcclusionAware || !cell.robot) return std::nullopt;
+  const auto widening =
+      removal_widening_m(*cell.robot, grid, settings.padding_m, settings.sync_error_s);
+  if (!widening) return std::nullopt;
+  return std::optional<ConfigurationSilhouettes>(std::in_place, cell,
+                                                 ModelLutOptions{}.ball_radius_m, *widening);
+}
 
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -20,7 +33,10 @@ SensingPipeline::SensingPipeline(const CellModel& cell, const CspaceGrid& grid, 
                                  const RobotSilhouettes& silhouettes,
                                  const std::vector<cv::Mat>& reference_frames,
                                  const std::vector<int>& noise_bits, const FusionSettings& settings)
-    : cell_(cell), grid_(grid), fusion_(luts, silhouettes, settings) {
+    : cell_(cell),
+      grid_(grid),
+      at_configuration_(silhouettes_at_configuration(cell, grid, settings)),
+      fusion_(luts, silhouettes, settings, at_configuration_ ? &*at_configuration_ : nullptr) {
   const std::size_t cameras = cell.cameras.size();
   if (reference_frames.size() != cameras || (!noise_bits.empty() && noise_bits.size() != cameras) ||
       luts.cameras.size() != cameras) {
@@ -82,7 +98,7 @@ const CellSet& SensingPipeline::process(const std::vector<cv::Mat>& frames,
   }
   times_.features_ms = ms_since(start);
   const auto fusion_start = std::chrono::steady_clock::now();
-  const CellSet& forbidden = fusion_.fuse(observations_, robot_cell_);
+  const CellSet& forbidden = fusion_.fuse(observations_, robot_cell_, q);
   times_.fusion_ms = ms_since(fusion_start);
   return forbidden;
 }

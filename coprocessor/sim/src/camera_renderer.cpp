@@ -26,9 +26,10 @@ CameraRenderer::CameraRenderer(PinholeCamera camera, const std::vector<SurfaceMe
     : camera_(std::move(camera)),
       sensor_(sensor),
       rasteriser_(camera_.intrinsics(), camera_.cell_to_camera()) {
-  for (const auto& surface : scenery) rasteriser_.draw(surface.mesh, surface.albedo);
+  for (const auto& surface : scenery) rasteriser_.draw(surface.mesh, surface.albedo, surface.body);
   scenery_gray_ = rasteriser_.gray().clone();
   scenery_depth_ = rasteriser_.depth().clone();
+  scenery_ids_ = rasteriser_.ids().clone();
 
   const CameraIntrinsics& k = camera_.intrinsics();
   if (has_distortion(k.distortion)) {
@@ -83,10 +84,12 @@ void CameraRenderer::add_sensor_effects(cv::Mat& frame, std::uint64_t frame_inde
 }
 
 cv::Mat CameraRenderer::render(const std::vector<SurfaceMesh>& moving, std::uint64_t frame_index,
-                               double time_s) {
+                               double time_s, cv::Mat* object_ids) {
   scenery_gray_.copyTo(rasteriser_.gray());
   scenery_depth_.copyTo(rasteriser_.depth());
-  for (const auto& surface : moving) rasteriser_.draw(surface.mesh, surface.albedo);
+  scenery_ids_.copyTo(rasteriser_.ids());
+  for (const auto& surface : moving) rasteriser_.draw(surface.mesh, surface.albedo, surface.body);
+  if (object_ids != nullptr) *object_ids = lens_view(rasteriser_.ids(), cv::INTER_NEAREST).clone();
   cv::Mat frame = lens_view(rasteriser_.gray(), cv::INTER_LINEAR).clone();
   add_sensor_effects(frame, frame_index, time_s);
   return frame;

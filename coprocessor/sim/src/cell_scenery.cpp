@@ -64,7 +64,9 @@ std::vector<SurfaceMesh> cell_scenery(const Eigen::Vector3d& size_m,
             100, 70);
   scenery.push_back(SurfaceMesh{
       quad({-hx, -hy, height}, {size_m.x(), 0.0, 0.0}, {0.0, size_m.y(), 0.0}), kCeilingAlbedo});
-  for (const auto& box : boxes) scenery.push_back(surface_of({box}, kBoxAlbedo));
+  for (std::size_t b = 0; b < boxes.size(); ++b) {
+    scenery.push_back(surface_of({boxes[b]}, kBoxAlbedo, body_code(BodyKind::kStaticObstacle, b)));
+  }
   return scenery;
 }
 

@@ -52,6 +52,21 @@ struct GroundTruth::Impl {
   std::vector<FclBody> robot_bodies(const std::vector<PlacedShape>& robot) {
     return make_fcl_bodies(robot, "GroundTruth: robot", cache);
   }
+
+  // The obstacles the robot touches, in ascending order: only the first when `first_only`.
+  std::vector<std::size_t> colliding(const std::vector<PlacedShape>& robot, bool first_only) {
+    const std::vector<FclBody> parts = robot_bodies(robot);
+    std::vector<std::size_t> hits;
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      const bool hit = std::any_of(parts.begin(), parts.end(), [&](const FclBody& part) {
+        return bodies_collide(part, obstacles[i]);
+      });
+      if (!hit) continue;
+      hits.push_back(i);
+      if (first_only) break;
+    }
+    return hits;
+  }
 };
 
 GroundTruth::GroundTruth(const std::vector<PlacedShape>& obstacles)
@@ -71,13 +86,14 @@ bool GroundTruth::collides(const std::vector<PlacedShape>& robot) const {
 
 std::optional<std::size_t> GroundTruth::first_colliding_obstacle(
     const std::vector<PlacedShape>& robot) const {
-  const std::vector<FclBody> robot_bodies = impl_->robot_bodies(robot);
-  for (std::size_t i = 0; i < impl_->obstacles.size(); ++i) {
-    for (const FclBody& part : robot_bodies) {
-      if (bodies_collide(part, impl_->obstacles[i])) return i;
-    }
-  }
-  return std::nullopt;
+  const std::vector<std::size_t> hits = impl_->colliding(robot, true);
+  if (hits.empty()) return std::nullopt;
+  return hits.front();
+}
+
+std::vector<std::size_t> GroundTruth::colliding_obstacles(
+    const std::vector<PlacedShape>& robot) const {
+  return impl_->colliding(robot, false);
 }
 
 double GroundTruth::min_distance_m(const std::vector<PlacedShape>& robot) const {

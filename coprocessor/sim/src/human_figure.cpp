@@ -112,9 +112,12 @@ std::vector<PlacedShape> human_shapes(const HumanPose& pose) {
   // Each arm swings with the opposite leg.
   const double arm_swing_rad = amplitude * kArmSwing_rad * std::sin(pose.gait_phase_rad);
   for (const double side : {1.0, -1.0}) {  // left, right
-    const double upper_rad = pose.arm_raise_rad - side * arm_swing_rad;
+    const bool reaching = side < 0.0 && pose.right_arm_reach_rad > 0.0;
+    const double upper_rad =
+        reaching ? pose.right_arm_reach_rad : pose.arm_raise_rad - side * arm_swing_rad;
+    const double elbow_rad = reaching ? 0.0 : kElbowFlex_rad;
     add_limb(shapes, {0.0, side * kShoulderHalfWidth_m, kShoulderHeight_m + sink_m},
-             {upper_rad, upper_rad + kElbowFlex_rad}, {kUpperArmLength_m, kUpperArmRadius_m},
+             {upper_rad, upper_rad + elbow_rad}, {kUpperArmLength_m, kUpperArmRadius_m},
              {kForearmLength_m, kForearmRadius_m}, body_to_cell);
   }
   for (const auto& [side, leg] : {std::pair{1.0, left_leg}, std::pair{-1.0, right_leg}}) {

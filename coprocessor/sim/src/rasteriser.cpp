@@ -51,16 +51,18 @@ Rasteriser::Rasteriser(const CameraIntrinsics& intrinsics, const Eigen::Isometry
     : intrinsics_(intrinsics),
       cell_to_camera_(cell_to_camera),
       gray_(intrinsics.height_px, intrinsics.width_px, CV_8UC1),
-      depth_(intrinsics.height_px, intrinsics.width_px, CV_32FC1) {
+      depth_(intrinsics.height_px, intrinsics.width_px, CV_32FC1),
+      ids_(intrinsics.height_px, intrinsics.width_px, CV_16UC1) {
   clear();
 }
 
 void Rasteriser::clear() {
   gray_.setTo(0);
   depth_.setTo(cv::Scalar(static_cast<double>(std::numeric_limits<float>::infinity())));
+  ids_.setTo(0);
 }
 
-void Rasteriser::draw(const TriangleMesh& mesh, std::uint8_t albedo) {
+void Rasteriser::draw(const TriangleMesh& mesh, std::uint8_t albedo, BodyCode body) {
   for (const auto& triangle : mesh.triangles) {
     const Eigen::Vector3d& a = mesh.vertices[triangle[0]];
     const Eigen::Vector3d& b = mesh.vertices[triangle[1]];
@@ -69,21 +71,21 @@ void Rasteriser::draw(const TriangleMesh& mesh, std::uint8_t albedo) {
     const std::array<Eigen::Vector3d, 3> in{cell_to_camera_ * a, cell_to_camera_ * b,
                                             cell_to_camera_ * c};
     if (in[0].z() >= kNearPlane_m && in[1].z() >= kNearPlane_m && in[2].z() >= kNearPlane_m) {
-      draw_camera_triangle(in[0], in[1], in[2], shade);
+      draw_camera_triangle(in[0], in[1], in[2], shade, body);
       continue;
     }
     std::array<Eigen::Vector3d, 4> clipped;
     const int count = clip_near(in, clipped);
     for (int k = 1; k + 1 < count; ++k) {
       const auto second = static_cast<std::size_t>(k);
-      draw_camera_triangle(clipped[0], clipped[second], clipped[second + 1], shade);
+      draw_camera_triangle(clipped[0], clipped[second], clipped[second + 1], shade, body);
     }
   }
 }
 
 // Half-space rasterisation with perspective-correct depth (1/z is linear in screen space).
 void Rasteriser::draw_camera_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                      const Eigen::Vector3d& c, std::uint8_t shade) {
+                                      const Eigen::Vector3d& c, std::uint8_t shade, BodyCode body) {
   const auto screen = [this](const Eigen::Vector3d& p) {
     return Eigen::Vector3d(intrinsics_.fx_px * p.x() / p.z() + intrinsics_.cx_px,
                            intrinsics_.fy_px * p.y() / p.z() + intrinsics_.cy_px, 1.0 / p.z());
@@ -112,6 +114,7 @@ void Rasteriser::draw_camera_triangle(const Eigen::Vector3d& a, const Eigen::Vec
   for (int y = y0; y <= y1; ++y) {
     auto* gray_row = gray_.ptr<std::uint8_t>(y);
     auto* depth_row = depth_.ptr<float>(y);
+    auto* id_row = ids_.ptr<BodyCode>(y);
     double w0 = e0[0] * x0 + e0[1] * y + e0[2];
     double w1 = e1[0] * x0 + e1[1] * y + e1[2];
     double w2 = e2[0] * x0 + e2[1] * y + e2[2];
@@ -122,6 +125,7 @@ void Rasteriser::draw_camera_triangle(const Eigen::Vector3d& a, const Eigen::Vec
       if (z < depth_row[x]) {
         depth_row[x] = z;
         gray_row[x] = shade;
+        id_row[x] = body;
       }
     }
   }

@@ -36,27 +36,36 @@ std::vector<PlacedShape> SimulatedCell::robot_shapes(const std::vector<double>& 
 
 std::vector<SurfaceMesh> SimulatedCell::moving_surfaces(const SimScene& scene) const {
   std::vector<SurfaceMesh> surfaces;
-  surfaces.push_back(surface_of(robot_shapes(scene.q), kRobotAlbedo));
-  for (const auto& human : scene.humans) {
-    std::vector<PlacedShape> body = human_shapes(human);
+  surfaces.push_back(surface_of(robot_shapes(scene.q), kRobotAlbedo, body_code(BodyKind::kRobot)));
+  for (std::size_t h = 0; h < scene.humans.size(); ++h) {
+    std::vector<PlacedShape> body = human_shapes(scene.humans[h]);
+    const BodyCode code = body_code(BodyKind::kHuman, h);
     const auto head = static_cast<std::size_t>(HumanPart::kHead);
-    surfaces.push_back(surface_of({body[head]}, kSkinAlbedo));
+    surfaces.push_back(surface_of({body[head]}, kSkinAlbedo, code));
     body.erase(body.begin() + static_cast<std::ptrdiff_t>(head));
-    surfaces.push_back(surface_of(body, kClothesAlbedo));
+    surfaces.push_back(surface_of(body, kClothesAlbedo, code));
   }
-  for (const auto& object : scene.objects) surfaces.push_back(surface_of({object}, kObjectAlbedo));
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    surfaces.push_back(
+        surface_of({scene.objects[o]}, kObjectAlbedo, body_code(BodyKind::kObject, o)));
+  }
   return surfaces;
 }
 
 std::vector<cv::Mat> SimulatedCell::render(const SimScene& scene, std::uint64_t frame_index,
-                                           double time_s) {
-  return render_surfaces(moving_surfaces(scene), frame_index, time_s);
+                                           double time_s, std::vector<cv::Mat>* object_ids) {
+  return render_surfaces(moving_surfaces(scene), frame_index, time_s, object_ids);
 }
 
 std::vector<cv::Mat> SimulatedCell::render_surfaces(const std::vector<SurfaceMesh>& moving,
-                                                    std::uint64_t frame_index, double time_s) {
+                                                    std::uint64_t frame_index, double time_s,
+                                                    std::vector<cv::Mat>* object_ids) {
   std::vector<cv::Mat> frames;
-  for (auto& renderer : renderers_) frames.push_back(renderer.render(moving, frame_index, time_s));
+  if (object_ids != nullptr) object_ids->assign(renderers_.size(), cv::Mat());
+  for (std::size_t c = 0; c < renderers_.size(); ++c) {
+    frames.push_back(renderers_[c].render(moving, frame_index, time_s,
+                                          object_ids != nullptr ? &(*object_ids)[c] : nullptr));
+  }
   return frames;
 }
 

@@ -4,9 +4,11 @@
 
 namespace safecell {
 
-SurfaceMesh surface_of(const std::vector<PlacedShape>& shapes, std::uint8_t albedo, int segments) {
+SurfaceMesh surface_of(const std::vector<PlacedShape>& shapes, std::uint8_t albedo, BodyCode body,
+                       int segments) {
   SurfaceMesh surface;
   surface.albedo = albedo;
+  surface.body = body;
   for (const auto& shape : shapes) {
     const TriangleMesh part = tessellate(shape, segments);
     const auto offset = static_cast<std::uint32_t>(surface.mesh.vertices.size());

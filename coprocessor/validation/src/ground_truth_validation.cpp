@@ -1,78 +1,29 @@
 #include "safecell/validation/ground_truth_validation.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
-#include <random>
+#include <atomic>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "safecell/pipeline/sensing_pipeline.hpp"
 #include "safecell/pipeline/simulated_reference.hpp"
-#include "safecell/robot/kinematics.hpp"
 #include "safecell/sim/cell_simulation.hpp"
-#include "safecell/sim/ground_truth.hpp"
 #include "safecell/validation/percentile.hpp"
-#include "safecell/validation/scene_check.hpp"
 
 namespace safecell {
 namespace {
 
-constexpr double kWallClearance_m = 0.3;
-
-// A box standing on the floor somewhere in the cell: 0.2-0.8 m a side, 0.2-1.2 m high, turned.
-PlacedShape random_object(double half_x, double half_y, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> side(0.2, 0.8);
-  const Eigen::Vector3d size(side(rng), side(rng),
-                             std::uniform_real_distribution<double>(0.2, 1.2)(rng));
-  PlacedShape object{Box{size}, Eigen::Isometry3d::Identity()};
-  object.pose.translate(Eigen::Vector3d(
-      std::uniform_real_distribution<double>(-half_x, half_x)(rng),
-      std::uniform_real_distribution<double>(-half_y, half_y)(rng), size.z() / 2.0));
-  object.pose.rotate(Eigen::AngleAxisd(
-      std::uniform_real_distribution<double>(-std::numbers::pi, std::numbers::pi)(rng),
-      Eigen::Vector3d::UnitZ()));
-  return object;
+std::uint64_t splitmix64(std::uint64_t state) {
+  std::uint64_t z = state + 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
 }
 
-SimScene random_scene(const CellModel& cell, const CspaceGrid& grid, std::mt19937_64& rng,
-                      int max_humans, int max_objects) {
-  SimScene scene;
-  scene.q = random_configuration(grid, rng);
-  const auto robot = collision_shapes_at(*cell.robot, scene.q);
-  const double half_x = cell.config.size_m[0] / 2.0 - kWallClearance_m;
-  const double half_y = cell.config.size_m[1] / 2.0 - kWallClearance_m;
-  const int humans = std::uniform_int_distribution<int>(1, max_humans)(rng);
-  for (int attempt = 0; attempt < 200 && static_cast<int>(scene.humans.size()) < humans;
-       ++attempt) {
-    HumanPose pose;
-    pose.position_m = {std::uniform_real_distribution<double>(-half_x, half_x)(rng),
-                       std::uniform_real_distribution<double>(-half_y, half_y)(rng)};
-    pose.heading_rad =
-        std::uniform_real_distribution<double>(-std::numbers::pi, std::numbers::pi)(rng);
-    pose.gait_phase_rad = std::uniform_real_distribution<double>(0.0, 2.0 * std::numbers::pi)(rng);
-    pose.arm_raise_rad = std::uniform_real_distribution<double>(0.0, 1.2)(rng);
-    const auto body = human_shapes(pose);
-    // Humans stand where there is room: not inside the robot, a box or another human.
-    std::vector<PlacedShape> occupied = cell.obstacles;
-    for (const auto& other : scene.humans) {
-      for (auto& part : human_shapes(other)) occupied.push_back(std::move(part));
-    }
-    if (GroundTruth(body).collides(robot)) continue;
-    if (!occupied.empty() && GroundTruth(occupied).collides(body)) continue;
-    scene.humans.push_back(pose);
-  }
-  // Objects where there is room as well, after the humans.
-  const int objects = std::uniform_int_distribution<int>(0, max_objects)(rng);
-  for (int attempt = 0; attempt < 200 && static_cast<int>(scene.objects.size()) < objects;
-       ++attempt) {
-    const PlacedShape object = random_object(half_x, half_y, rng);
-    std::vector<PlacedShape> occupied = cell.obstacles;
-    for (auto& body : moving_bodies(scene)) occupied.push_back(std::move(body));
-    if (GroundTruth({object}).collides(robot)) continue;
-    if (!occupied.empty() && GroundTruth(occupied).collides({object})) continue;
-    scene.objects.push_back(object);
-  }
-  return scene;
+// Scene s's own generator: the same for the same seed and s, whoever runs it.
+std::mt19937_64 scene_generator(std::uint64_t seed, std::size_t scene) {
+  return std::mt19937_64(splitmix64(splitmix64(seed) ^ static_cast<std::uint64_t>(scene)));
 }
 
 void check_options(const CellModel& cell, const ValidationOptions& options) {
@@ -80,56 +31,165 @@ void check_options(const CellModel& cell, const ValidationOptions& options) {
   if (options.scenes == 0 || options.configurations_per_scene == 0) {
     throw std::invalid_argument("validation needs at least one scene and one configuration");
   }
-  if (options.max_humans < 1 || options.max_humans > 10) {
+  if (options.limits.max_humans < 1 || options.limits.max_humans > 10) {
     throw std::invalid_argument("humans per scene must be 1..10, got " +
-                                std::to_string(options.max_humans));
+                                std::to_string(options.limits.max_humans));
   }
-  if (options.max_objects < 0 || options.max_objects > 10) {
+  if (options.limits.max_objects < 0 || options.limits.max_objects > 10) {
     throw std::invalid_argument("objects per scene must be 0..10, got " +
-                                std::to_string(options.max_objects));
+                                std::to_string(options.limits.max_objects));
+  }
+  if (options.shard.count < 1 || options.shard.index < 1 ||
+      options.shard.index > options.shard.count || options.shard.count > options.scenes) {
+    throw std::invalid_argument(
+        "shard " + std::to_string(options.shard.index) + "/" + std::to_string(options.shard.count) +
+        ": expected K/N with 1 <= K <= N <= the scenes (" + std::to_string(options.scenes) + ")");
   }
 }
 
+// What one scene gave.
+struct SceneResult {
+  ValidationReport report;
+  double fusion_ms = 0.0;
+  double features_ms = 0.0;
+};
+
+// One thread's simulated cell and pipeline (neither is thread-safe).
+class Worker {
+ public:
+  Worker(const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
+         const RobotSilhouettes& silhouettes, const std::vector<cv::Mat>& reference,
+         const ValidationOptions& options)
+      : cell_(cell),
+        grid_(grid),
+        options_(options),
+        sim_(simulate_cell(cell, sensor_of(options))),
+        pipeline_(cell, grid, luts, silhouettes, reference, {}, options.fusion),
+        no_masks_(luts, silhouettes, options.fusion) {}
+
+  SceneResult run(std::size_t s) {
+    std::mt19937_64 rng = scene_generator(options_.seed, s);
+    const SceneStratum wanted = kAllSceneStrata[s % kSceneStrata];
+    const StratifiedScene placed = make_scene(wanted, cell_, grid_, options_.limits, rng);
+    std::vector<cv::Mat> object_ids;
+    const auto frames =
+        sim_.render(placed.scene, 10 * s, 0.1 * static_cast<double>(s), &object_ids);
+    const CellSet* forbidden = &pipeline_.process(frames, placed.scene.q);
+    if (options_.negative_control == NegativeControl::kEmptyMasks) {
+      std::vector<CameraObservation> blind = pipeline_.observations();
+      for (auto& observation : blind) observation.blocked.clear();
+      forbidden = &no_masks_.fuse(blind, pipeline_.robot_cell());
+    }
+    SceneResult result;
+    result.fusion_ms = pipeline_.times().fusion_ms;
+    result.features_ms = pipeline_.times().features_ms;
+    const SceneUnderTest under_test{placed.scene,
+                                    object_ids,
+                                    *forbidden,
+                                    options_.fusion.camera_threshold,
+                                    to_string(placed.stratum),
+                                    s};
+    static_cast<SceneCheck&>(result.report) =
+        check_scene(cell_, grid_, sim_, under_test, options_.configurations_per_scene, rng);
+    result.report.scenes = 1;
+    result.report.objects = placed.scene.objects.size();
+    result.report.forbidden_share_sum =
+        static_cast<double>(forbidden->count()) / grid_.cell_count();
+    result.report.scenes_per_stratum[to_string(placed.stratum)] = 1;
+    return result;
+  }
+
+ private:
+  static SensorSettings sensor_of(const ValidationOptions& options) {
+    SensorSettings sensor;
+    sensor.seed = options.seed;
+    return sensor;
+  }
+
+  const CellModel& cell_;
+  const CspaceGrid& grid_;
+  const ValidationOptions& options_;
+  SimulatedCell sim_;
+  SensingPipeline pipeline_;
+  ForbiddenMapFusion no_masks_;  // the empty-masks negative control
+};
+
 }  // namespace
+
+SceneRange scenes_of_shard(std::size_t scenes, const Shard& shard) {
+  return {scenes * (shard.index - 1) / shard.count, scenes * shard.index / shard.count};
+}
+
+ValidationReport& ValidationReport::operator+=(const ValidationReport& other) {
+  SceneCheck::operator+=(other);
+  scenes += other.scenes;
+  objects += other.objects;
+  forbidden_share_sum += other.forbidden_share_sum;
+  for (const auto& [name, count] : other.scenes_per_stratum) scenes_per_stratum[name] += count;
+  fusion_ms_p99 = std::max(fusion_ms_p99, other.fusion_ms_p99);
+  features_ms_p99 = std::max(features_ms_p99, other.features_ms_p99);
+  return *this;
+}
 
 ValidationReport validate_against_ground_truth(
     const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
     const RobotSilhouettes& silhouettes, const ValidationOptions& options,
     const std::function<void(std::size_t, std::size_t)>& progress) {
   check_options(cell, options);
-  SensorSettings sensor;
-  sensor.seed = options.seed;
-  SimulatedCell sim = simulate_cell(cell, sensor);
-  const SimulatedReference reference =
-      simulated_reference(sim, cell, options.reference_frames, options.seed);
-  SensingPipeline pipeline(cell, grid, luts, silhouettes, reference.frames, {}, options.fusion);
+  ValidationOptions effective = options;
+  if (options.negative_control == NegativeControl::kEnvelopeRemoval) {
+    effective.fusion.removal = RobotRemoval::kPlain;
+  }
+  const LutSet damaged = options.negative_control == NegativeControl::kDroppedStrip
+                             ? with_strip_dropped(luts, grid)
+                             : LutSet{};
+  const LutSet& tables =
+      options.negative_control == NegativeControl::kDroppedStrip ? damaged : luts;
+
+  std::vector<cv::Mat> reference;
+  {
+    SimulatedCell sim = simulate_cell(cell, SensorSettings{.seed = options.seed});
+    reference = simulated_reference(sim, cell, options.reference_frames, options.seed).frames;
+  }
+  const SceneRange range = scenes_of_shard(options.scenes, options.shard);
+  const std::size_t count = range.end - range.first;
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  const auto threads = static_cast<unsigned>(
+      std::min<std::size_t>(options.threads == 0 ? hardware : options.threads, count));
+
+  std::vector<SceneResult> results(count);
+  std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
+  std::mutex progress_mutex;
+  std::exception_ptr failure;
+  const auto work = [&] {
+    try {
+      Worker worker(cell, grid, tables, silhouettes, reference, effective);
+      for (std::size_t k = next++; k < count; k = next++) {
+        results[k] = worker.run(range.first + k);
+        const std::lock_guard lock(progress_mutex);
+        ++done;
+        if (progress) progress(done, count);
+      }
+    } catch (...) {
+      const std::lock_guard lock(progress_mutex);
+      if (!failure) failure = std::current_exception();
+      next = count;  // the others stop after their scene
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& thread : pool) thread.join();
+  if (failure) std::rethrow_exception(failure);
 
   ValidationReport report;
-  std::vector<double> fusion_ms;
-  std::vector<double> features_ms;
-  double phantom_sum = 0.0;
-  double forbidden_share_sum = 0.0;
-  std::mt19937_64 rng(options.seed);
-  for (std::size_t s = 0; s < options.scenes; ++s) {
-    const SimScene scene = random_scene(cell, grid, rng, options.max_humans, options.max_objects);
-    report.objects += scene.objects.size();
-    const auto frames = sim.render(scene, 10 * s, 0.1 * static_cast<double>(s));
-    const CellSet& forbidden = pipeline.process(frames, scene.q);
-    fusion_ms.push_back(pipeline.times().fusion_ms);
-    features_ms.push_back(pipeline.times().features_ms);
-    forbidden_share_sum += static_cast<double>(forbidden.count()) / grid.cell_count();
-
-    const SceneCheck check =
-        check_scene(cell, grid, sim, pipeline, scene, options.configurations_per_scene, rng, s);
-    report += check;
-    phantom_sum += estimate_phantom_cells(cell, grid, pipeline, moving_bodies(scene),
-                                          options.phantom_samples, options.phantom_distance_m, rng);
-    if (progress) progress(s + 1, options.scenes);
+  std::vector<double> fusion_ms, features_ms;
+  for (const SceneResult& result : results) {  // in scene order: the same report every time
+    report += result.report;
+    fusion_ms.push_back(result.fusion_ms);
+    features_ms.push_back(result.features_ms);
   }
-  report.scenes = options.scenes;
-  report.false_positive_rate = report.SceneCheck::false_positive_rate();
-  report.phantom_cells = phantom_sum / static_cast<double>(options.scenes);
-  report.forbidden_share = forbidden_share_sum / static_cast<double>(options.scenes);
   report.fusion_ms_p99 = percentile(fusion_ms, 0.99);
   report.features_ms_p99 = percentile(features_ms, 0.99);
   return report;

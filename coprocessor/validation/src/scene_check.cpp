@@ -1,35 +1,101 @@
 #include "safecell/validation/scene_check.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "safecell/robot/kinematics.hpp"
 #include "safecell/sim/ground_truth.hpp"
+#include "safecell/validation/configuration_strata.hpp"
 
 namespace safecell {
 namespace {
 
 constexpr std::size_t kMissedCasesKept = 10;
+constexpr int kStaticBody = -1;
 
-// The feature cells a mask of pixels touches.
-FeatureMask feature_cells_of(const cv::Mat& pixels, const FeatureGrid& grid) {
-  FeatureMask cells(grid);
-  for (int y = 0; y < pixels.rows; ++y) {
-    const auto* row = pixels.ptr<std::uint8_t>(y);
-    for (int x = 0; x < pixels.cols; ++x) {
-      if (row[x] != 0) cells.set(x / grid.cell_width_px(), y / grid.cell_height_px());
-    }
-  }
-  return cells;
+double share(std::size_t part, std::size_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
 
-CellIndex cell_of(const CspaceGrid& grid, const std::vector<double>& q) {
-  JointAngles angles;
-  for (std::size_t j = 0; j < q.size(); ++j) angles.rad[j] = q[j];
-  return grid.cell_containing(angles).value();
+// One human or object of the scene as the check sees it.
+struct CheckedBody {
+  BodyCode code = 0;
+  int cameras_visible = 0;
+  UnseenReason reason = UnseenReason::kOutsideViews;  // when visible in too few cameras
+};
+
+// The reason most of the cameras that do not see the body give (ties: the earlier reason).
+UnseenReason dominant_reason(const UnseenReasons& counts) {
+  const auto most = std::max_element(counts.begin(), counts.end());
+  return static_cast<UnseenReason>(most - counts.begin());
+}
+
+std::vector<CheckedBody> check_bodies(const CellModel& cell, SimulatedCell& sim,
+                                      const SimScene& scene, const std::vector<cv::Mat>& object_ids,
+                                      int threshold) {
+  const std::vector<SurfaceMesh> surfaces = sim.moving_surfaces(scene);
+  std::vector<CheckedBody> bodies;
+  for (std::size_t b = 0; b < scene.humans.size() + scene.objects.size(); ++b) {
+    CheckedBody body;
+    body.code = b < scene.humans.size() ? body_code(BodyKind::kHuman, b)
+                                        : body_code(BodyKind::kObject, b - scene.humans.size());
+    std::vector<bool> visible(sim.camera_count());
+    for (std::size_t c = 0; c < sim.camera_count(); ++c) {
+      visible[c] = front_most_cells(object_ids.at(c), body.code, cell.feature_grid).any();
+      body.cameras_visible += visible[c] ? 1 : 0;
+    }
+    if (body.cameras_visible < threshold) {
+      std::vector<SurfaceMesh> own;
+      for (const auto& surface : surfaces) {
+        if (surface.body == body.code) own.push_back(surface);
+      }
+      UnseenReasons reasons{};
+      for (std::size_t c = 0; c < sim.camera_count(); ++c) {
+        if (visible[c]) continue;
+        const auto reason =
+            why_not_visible(object_ids[c], sim.coverage(c, own), body.code, cell.feature_grid);
+        ++reasons[static_cast<std::size_t>(reason)];
+      }
+      body.reason = dominant_reason(reasons);
+    }
+    bodies.push_back(body);
+  }
+  return bodies;
 }
 
 }  // namespace
+
+StratumCounts& StratumCounts::operator+=(const StratumCounts& other) {
+  configs += other.configs;
+  colliding += other.colliding;
+  missed += other.missed;
+  unseen += other.unseen;
+  clear += other.clear;
+  clear_forbidden += other.clear_forbidden;
+  return *this;
+}
+
+SceneCheck& SceneCheck::operator+=(const SceneCheck& other) {
+  configs_checked += other.configs_checked;
+  colliding += other.colliding;
+  missed += other.missed;
+  unseen += other.unseen;
+  unseen_forbidden += other.unseen_forbidden;
+  for (std::size_t r = 0; r < kUnseenReasonCount; ++r) unseen_reasons[r] += other.unseen_reasons[r];
+  free += other.free;
+  false_positives += other.false_positives;
+  clear += other.clear;
+  clear_forbidden += other.clear_forbidden;
+  bodies += other.bodies;
+  bodies_visible_enough += other.bodies_visible_enough;
+  for (const auto& [name, counts] : other.strata) strata[name] += counts;
+  for (const auto& missed_case : other.missed_cases) {
+    if (missed_cases.size() < kMissedCasesKept) missed_cases.push_back(missed_case);
+  }
+  return *this;
+}
+
+double SceneCheck::false_positive_rate() const { return share(false_positives, free); }
+double SceneCheck::needless_stop_share() const { return share(clear_forbidden, clear); }
 
 std::vector<PlacedShape> moving_bodies(const SimScene& scene) {
   std::vector<PlacedShape> bodies = scene.objects;
@@ -39,132 +105,95 @@ std::vector<PlacedShape> moving_bodies(const SimScene& scene) {
   return bodies;
 }
 
-std::vector<double> random_configuration(const CspaceGrid& grid, std::mt19937_64& rng) {
-  std::vector<double> q(grid.joint_count());
-  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
-    q[j] = std::uniform_real_distribution<double>(grid.joint(j).lo_rad, grid.joint(j).hi_rad)(rng);
-  }
-  return q;
-}
-
-SceneCheck& SceneCheck::operator+=(const SceneCheck& other) {
-  configs_checked += other.configs_checked;
-  colliding += other.colliding;
-  missed += other.missed;
-  unseen += other.unseen;
-  free += other.free;
-  false_positives += other.false_positives;
-  for (const auto& missed_case : other.missed_cases) {
-    if (missed_cases.size() < kMissedCasesKept) missed_cases.push_back(missed_case);
-  }
-  return *this;
-}
-
 SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedCell& sim,
-                       const SensingPipeline& pipeline, const SimScene& scene,
-                       std::size_t configurations, std::mt19937_64& rng, std::size_t scene_index) {
+                       const SceneUnderTest& under_test, std::size_t configurations,
+                       std::mt19937_64& rng) {
+  const SimScene& scene = under_test.scene;
+  const int threshold = under_test.camera_threshold;
+  const std::vector<CheckedBody> bodies =
+      check_bodies(cell, sim, scene, under_test.object_ids, threshold);
   SceneCheck check;
-  // The scene's moving obstacles (humans, then objects) and how many cameras saw each: its
-  // feature cells are obstacles there after robot removal.
-  const std::size_t humans = scene.humans.size();
-  const std::size_t movers = humans + scene.objects.size();
-  check.cameras_seeing.assign(movers, 0);
-  std::vector<PlacedShape> obstacles;
-  std::vector<std::string> obstacle_names;
-  std::vector<int> obstacle_mover;  // -1: a static obstacle of the cell file
-  for (std::size_t m = 0; m < movers; ++m) {
-    SimScene alone{scene.q, {}, {}};
-    if (m < humans) {
-      alone.humans.push_back(scene.humans[m]);
-    } else {
-      alone.objects.push_back(scene.objects[m - humans]);
-    }
-    auto surfaces = sim.moving_surfaces(alone);
-    surfaces.erase(surfaces.begin());  // the robot
-    for (std::size_t c = 0; c < sim.camera_count(); ++c) {
-      const FeatureMask seen = feature_cells_of(sim.coverage(c, surfaces), cell.feature_grid);
-      if (pipeline.observations()[c].known && seen.intersects(pipeline.fusion().obstacles(c))) {
-        ++check.cameras_seeing[m];
-      }
-    }
-    const std::string name =
-        m < humans ? "human " + std::to_string(m + 1) : "object " + std::to_string(m - humans + 1);
-    for (auto& part : m < humans ? human_shapes(scene.humans[m]) : alone.objects) {
-      obstacles.push_back(std::move(part));
-      obstacle_names.push_back(name);
-      obstacle_mover.push_back(static_cast<int>(m));
+  check.bodies = bodies.size();
+  for (const auto& body : bodies) check.bodies_visible_enough += body.cameras_visible >= threshold;
+
+  // Every shape the robot can touch, and whose it is: a body of the scene or a static obstacle.
+  std::vector<PlacedShape> shapes;
+  std::vector<int> owner;
+  for (std::size_t h = 0; h < scene.humans.size(); ++h) {
+    for (auto& part : human_shapes(scene.humans[h])) {
+      shapes.push_back(std::move(part));
+      owner.push_back(static_cast<int>(h));
     }
   }
-  for (std::size_t b = 0; b < cell.obstacles.size(); ++b) {
-    obstacles.push_back(cell.obstacles[b]);
-    obstacle_names.push_back(cell.config.obstacles.at(b).name);
-    obstacle_mover.push_back(-1);
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    shapes.push_back(scene.objects[o]);
+    owner.push_back(static_cast<int>(scene.humans.size() + o));
   }
-  std::vector<Eigen::Vector2d> targets;
-  for (const auto& human : scene.humans) targets.push_back(human.position_m);
-  for (const auto& object : scene.objects) targets.push_back(object.pose.translation().head<2>());
-  if (obstacles.empty()) return check;
-  const GroundTruth truth(obstacles);
-  const CellSet& forbidden = pipeline.fusion().forbidden();
-  const int threshold = pipeline.fusion().settings().camera_threshold;
+  for (const auto& obstacle : cell.obstacles) {
+    shapes.push_back(obstacle);
+    owner.push_back(kStaticBody);
+  }
+  const GroundTruth truth(shapes);
+  const CellSet& forbidden = under_test.forbidden;
 
   for (std::size_t k = 0; k < configurations; ++k) {
-    std::vector<double> q = random_configuration(grid, rng);
-    if (k % 2 == 1 && !targets.empty()) {  // turned towards a human or an object
-      const auto& target = targets[k / 2 % targets.size()];
-      q[0] = std::clamp(std::atan2(target.y(), target.x()) +
-                            std::uniform_real_distribution<double>(-0.3, 0.3)(rng),
-                        grid.joint(0).lo_rad, grid.joint(0).hi_rad);
-    }
+    const ConfigurationStratum stratum = kAllConfigurationStrata[k % kConfigurationStrata];
+    const std::vector<double> q =
+        sample_configuration(stratum, grid, scene, k / kConfigurationStrata, rng);
     const bool is_forbidden = forbidden.test(cell_of(grid, q));
-    const auto hit = truth.first_colliding_obstacle(collision_shapes_at(*cell.robot, q));
-    ++check.configs_checked;
-    if (!hit) {
+    const std::vector<PlacedShape> robot = collision_shapes_at(*cell.robot, q);
+    StratumCounts counts;
+    counts.configs = 1;
+    const std::vector<std::size_t> hits =
+        shapes.empty() ? std::vector<std::size_t>{} : truth.colliding_obstacles(robot);
+    if (hits.empty()) {
       ++check.free;
       check.false_positives += is_forbidden ? 1 : 0;
-      continue;
-    }
-    ++check.colliding;
-    const int mover = obstacle_mover[*hit];
-    const int seeing = mover < 0 ? static_cast<int>(sim.camera_count())
-                                 : check.cameras_seeing[static_cast<std::size_t>(mover)];
-    if (mover >= 0 && seeing < threshold) {
-      ++check.unseen;
-      continue;
-    }
-    if (!is_forbidden) {
-      ++check.missed;
-      if (check.missed_cases.size() < kMissedCasesKept) {
-        check.missed_cases.push_back(MissedCollision{scene_index, q, obstacle_names[*hit], seeing});
+      if (truth.min_distance_m(robot) >= kClearDistance_m) {
+        counts.clear = 1;
+        counts.clear_forbidden = is_forbidden ? 1 : 0;
+      }
+    } else {
+      counts.colliding = 1;
+      // Must the map hold it? When any touched body is static or visible in enough cameras.
+      const CheckedBody* seen = nullptr;
+      const CheckedBody* unseen = nullptr;
+      bool touches_static = false;
+      for (const std::size_t hit : hits) {
+        if (owner[hit] == kStaticBody) {
+          touches_static = true;
+          continue;
+        }
+        const CheckedBody& body = bodies[static_cast<std::size_t>(owner[hit])];
+        const CheckedBody*& first = body.cameras_visible >= threshold ? seen : unseen;
+        if (first == nullptr) first = &body;
+      }
+      if (touches_static || seen != nullptr) {
+        if (!is_forbidden) {
+          counts.missed = 1;
+          if (check.missed_cases.size() < kMissedCasesKept) {
+            check.missed_cases.push_back(
+                MissedCollision{under_test.index, under_test.stratum, q,
+                                seen != nullptr ? body_name(seen->code) : "static obstacle",
+                                seen != nullptr ? seen->cameras_visible : -1});
+          }
+        }
+      } else if (unseen != nullptr) {  // always: a hit that is not static is some body's
+        counts.unseen = 1;
+        check.unseen_forbidden += is_forbidden ? 1 : 0;
+        ++check.unseen_reasons[static_cast<std::size_t>(unseen->reason)];
       }
     }
+    check.configs_checked += counts.configs;
+    check.colliding += counts.colliding;
+    check.missed += counts.missed;
+    check.unseen += counts.unseen;
+    check.clear += counts.clear;
+    check.clear_forbidden += counts.clear_forbidden;
+    check.strata["scene/" + under_test.stratum] += counts;
+    check.strata[std::string("configs/") + to_string(stratum)] += counts;
   }
   return check;
-}
-
-double estimate_phantom_cells(const CellModel& cell, const CspaceGrid& grid,
-                              const SensingPipeline& pipeline,
-                              const std::vector<PlacedShape>& bodies, std::size_t samples,
-                              double distance_m, std::mt19937_64& rng) {
-  const CellSet& critical = pipeline.fusion().critical();
-  std::vector<CellIndex> critical_cells;
-  for (CellIndex c = critical.next_set(0); c < critical.cell_count();
-       c = critical.next_set(c + 1)) {
-    critical_cells.push_back(c);
-  }
-  if (critical_cells.empty() || bodies.empty() || samples == 0) return 0.0;
-  const GroundTruth truth(bodies);
-  std::size_t phantoms = 0;
-  const std::size_t checked = std::min(samples, critical_cells.size());
-  std::uniform_int_distribution<std::size_t> pick(0, critical_cells.size() - 1);
-  for (std::size_t i = 0; i < checked; ++i) {
-    const JointAngles centre =
-        grid.cell_centre(grid.coords_of(critical_cells[pick(rng)]).value()).value();
-    const std::vector<double> q(centre.rad, centre.rad + grid.joint_count());
-    if (truth.min_distance_m(collision_shapes_at(*cell.robot, q)) > distance_m) ++phantoms;
-  }
-  return static_cast<double>(phantoms) / static_cast<double>(checked) *
-         static_cast<double>(critical_cells.size());
 }
 
 }  // namespace safecell

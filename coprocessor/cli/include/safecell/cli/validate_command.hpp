@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace safecell {
 
@@ -15,14 +16,27 @@ struct ValidateOptions {
   std::size_t scenes = 200;
   std::uint64_t seed = 1;
   std::size_t configurations = 400;  // per scene
-  int humans = 2;                    // at most, per scene
-  int objects = 1;                   // boxes, at most, per scene
+  int humans = 2;                    // at most, per uniform scene
+  int objects = 1;                   // boxes, at most, per uniform scene
   std::string removal = "occlusion-aware";
-  std::string lut_cache;  // empty: the default cache folder
+  std::string negative_control = "none";
+  std::string shard = "1/1";  // K/N: the K-th of N parts of the scenes
+  unsigned threads = 0;       // 0: one per core
+  std::string lut_cache;      // empty: the default cache folder
   bool json = false;
 };
 
 // Returns the exit code: 0, or kExitValidationFailed when `missed` > 0.
 int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream& err);
+
+struct ValidateMergeOptions {
+  std::vector<std::string> files;  // JSON reports of `safecell validate --json`
+  bool json = false;
+};
+
+// Adds the reports of shards of one run into the report of the run. Throws std::invalid_argument
+// (exit 2) for a file that is not such a report, or reports of different runs or the same shard.
+// Returns as run_validate() does.
+int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out);
 
 }  // namespace safecell

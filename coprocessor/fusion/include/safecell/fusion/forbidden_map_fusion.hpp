@@ -23,6 +23,7 @@
 
 #include "safecell/fusion/camera_observation.hpp"
 #include "safecell/fusion/robot_removal.hpp"
+#include "safecell/lut/configuration_silhouettes.hpp"
 #include "safecell/lut/lut_set.hpp"
 #include "safecell/lut/robot_silhouettes.hpp"
 
@@ -32,6 +33,13 @@ struct FusionSettings {
   int camera_threshold = 2;  // 1..camera count
   RobotRemoval removal = RobotRemoval::kOcclusionAware;
   int occlusion_reach = kDefaultOcclusionReach;  // feature cells, for kOcclusionAware
+  // How far apart the frames' exposure and the joint values given for it may be (the time-sync
+  // error bound), s: robot removal at the configuration widens the silhouette by the motion
+  // possible in that time (configuration_silhouettes.hpp).
+  double sync_error_s = 0.002;
+  // Calibration and model error the silhouette at the configuration is widened by, m (as the
+  // padding of the tables).
+  double padding_m = 0.02;
 };
 
 struct FusionCounts {
@@ -44,16 +52,21 @@ struct FusionCounts {
 
 class ForbiddenMapFusion {
  public:
-  // Keeps references to `luts` and `silhouettes`: both must outlive the engine. Throws
-  // std::invalid_argument when the silhouettes' camera count differs from the tables', or the
-  // threshold is outside 1..camera count.
+  // Keeps references to `luts`, `silhouettes` and `at_configuration`: all must outlive the
+  // engine. at_configuration: the robot's silhouette at its joint values, which occlusion-aware
+  // removal uses when a cycle gives them; without it (or them), and for plain removal, the
+  // removal uses LUT-1 of the robot's cell. Throws std::invalid_argument when the silhouettes'
+  // camera count differs from the tables', or the threshold is outside 1..camera count.
   ForbiddenMapFusion(const LutSet& luts, const RobotSilhouettes& silhouettes,
-                     const FusionSettings& settings);
+                     const FusionSettings& settings,
+                     const ConfigurationSilhouettes* at_configuration = nullptr);
 
-  // One cycle. robot_cell: the cell of the robot's configuration at the frames' exposure time.
-  // Throws std::invalid_argument for the wrong number of observations or a mask of the wrong
-  // size, std::out_of_range for a robot cell outside the grid.
-  const CellSet& fuse(const std::vector<CameraObservation>& observations, CellIndex robot_cell);
+  // One cycle. robot_cell: the cell of the robot's configuration at the frames' exposure time;
+  // q: that configuration (rad, one per joint), or empty. Throws std::invalid_argument for the
+  // wrong number of observations or a mask of the wrong size, std::out_of_range for a robot cell
+  // outside the grid.
+  const CellSet& fuse(const std::vector<CameraObservation>& observations, CellIndex robot_cell,
+                      std::span<const double> q = {});
 
   [[nodiscard]] const CellSet& forbidden() const { return forbidden_; }
   [[nodiscard]] const CellSet& critical() const { return critical_; }
@@ -64,7 +77,8 @@ class ForbiddenMapFusion {
   [[nodiscard]] const FeatureMask& obstacles(std::size_t camera) const {
     return obstacles_.at(camera);
   }
-  // The robot's silhouette (LUT-1 of its cell) in one camera in the last cycle.
+  // The robot's silhouette that removal used in one camera in the last cycle (at its
+  // configuration, or LUT-1 of its cell).
   [[nodiscard]] const FeatureMask& robot_silhouette(std::size_t camera) const {
     return robot_.at(camera);
   }
@@ -84,6 +98,7 @@ class ForbiddenMapFusion {
 
   const LutSet& luts_;
   const RobotSilhouettes& silhouettes_;
+  const ConfigurationSilhouettes* at_configuration_;
   FusionSettings settings_;
   std::vector<CellSet> observable_;
   std::vector<CellLines> suspicious_lines_;                   // per camera, filled box by box
@@ -111,10 +126,19 @@ void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int
 // Every cell some pixel of the table back-projects to.
 [[nodiscard]] CellSet observable_cells(const PixelToCellsTable& table);
 
-// Robot removal for every known camera (shared by the fast fusion and the baseline).
+// Where the robot is, for robot removal: its cell, and its joint values if known.
+struct RobotAtExposure {
+  const RobotSilhouettes& cell_silhouettes;          // LUT-1
+  const ConfigurationSilhouettes* at_configuration;  // may be null
+  CellIndex cell = 0;
+  std::span<const double> q;  // may be empty
+};
+
+// Robot removal for every known camera (shared by the fast fusion and the baseline): with the
+// silhouette at the configuration for occlusion-aware removal when there is one and q is given,
+// LUT-1 of the cell otherwise. robot: the silhouettes used.
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
-                             const RobotSilhouettes& silhouettes, CellIndex robot_cell,
-                             const FusionSettings& settings, std::vector<FeatureMask>& robot,
-                             std::vector<FeatureMask>& obstacles);
+                             const RobotAtExposure& where, const FusionSettings& settings,
+                             std::vector<FeatureMask>& robot, std::vector<FeatureMask>& obstacles);
 
 }  // namespace safecell

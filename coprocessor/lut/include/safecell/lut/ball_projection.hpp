@@ -48,4 +48,8 @@ class BallProjection {
   double inverse_cell_height_ = 0.0;
 };
 
+// mask |= the feature rectangle of every ball (projected several at a time).
+void add_ball_rects(const BallProjection& projection, std::span<const Ball> balls_in_cell,
+                    FeatureMask& mask);
+
 }  // namespace safecell

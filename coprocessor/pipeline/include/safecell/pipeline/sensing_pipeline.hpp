@@ -5,6 +5,7 @@
 // image) has an unknown view. Not thread-safe; after the first cycle it allocates little.
 
 #include <opencv2/core/mat.hpp>
+#include <optional>
 #include <vector>
 
 #include "safecell/acquisition/frame_set.hpp"
@@ -24,10 +25,16 @@ class SensingPipeline {
  public:
   // reference_frames: per camera, the reference image (CV_8UC1 of the camera's size).
   // noise_bits: per camera, or empty for none. Keeps references to `luts` and `silhouettes`.
+  // Occlusion-aware removal takes the robot's silhouette at its configuration from the cell's
+  // robot model (configuration_silhouettes.hpp), widened by settings.padding_m and the motion
+  // within settings.sync_error_s; a cell whose URDF gives no speed limits falls back to LUT-1.
   // Throws std::invalid_argument when the counts or sizes do not match the cell.
   SensingPipeline(const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
                   const RobotSilhouettes& silhouettes, const std::vector<cv::Mat>& reference_frames,
                   const std::vector<int>& noise_bits, const FusionSettings& settings);
+  // Fixed in place: the fusion engine points into the pipeline.
+  SensingPipeline(const SensingPipeline&) = delete;
+  SensingPipeline& operator=(const SensingPipeline&) = delete;
 
   // q: the robot's joint values (rad) when the frames were exposed; outside the grid it is
   // refused (std::out_of_range): the caller must stop the robot then.
@@ -50,6 +57,7 @@ class SensingPipeline {
   std::vector<FeatureImages> current_;
   std::vector<CameraObservation> observations_;
   std::vector<cv::Mat> images_;  // a frame set's images, unknown views empty
+  std::optional<ConfigurationSilhouettes> at_configuration_;
   ForbiddenMapFusion fusion_;
   CycleTimes times_;
   CellIndex robot_cell_ = 0;

@@ -28,8 +28,11 @@ class CameraRenderer {
 
   const PinholeCamera& camera() const { return camera_; }
 
-  // The 8-bit frame (CV_8UC1) at `time_s`, frame number `frame_index` of the sequence.
-  cv::Mat render(const std::vector<SurfaceMesh>& moving, std::uint64_t frame_index, double time_s);
+  // The 8-bit frame (CV_8UC1) at `time_s`, frame number `frame_index` of the sequence. With
+  // `object_ids`, also which body each pixel shows front-most (CV_16UC1 of body codes, through
+  // the same lens; a pixel the lens maps from outside the rendering is background).
+  cv::Mat render(const std::vector<SurfaceMesh>& moving, std::uint64_t frame_index, double time_s,
+                 cv::Mat* object_ids = nullptr);
 
   // The pixels (CV_8UC1, 255 = covered) the meshes cover, whatever stands in front of them.
   cv::Mat coverage(const std::vector<SurfaceMesh>& meshes);
@@ -43,6 +46,7 @@ class CameraRenderer {
   Rasteriser rasteriser_;
   cv::Mat scenery_gray_;
   cv::Mat scenery_depth_;
+  cv::Mat scenery_ids_;
   cv::Mat lens_map_x_;  // empty for a lens without distortion
   cv::Mat lens_map_y_;
   std::vector<std::int8_t> noise_table_;

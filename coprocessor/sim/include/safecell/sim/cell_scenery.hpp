@@ -10,7 +10,8 @@
 
 namespace safecell {
 
-// size_m: the inside of the cell, floor centre at the origin, z up. Boxes are rendered as given.
+// size_m: the inside of the cell, floor centre at the origin, z up. Boxes are rendered as given,
+// box b as static obstacle b in the object-id image; the rest is background.
 std::vector<SurfaceMesh> cell_scenery(const Eigen::Vector3d& size_m,
                                       const std::vector<PlacedShape>& boxes);
 

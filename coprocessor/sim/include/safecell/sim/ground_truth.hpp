@@ -36,6 +36,8 @@ class GroundTruth {
 
   // The lowest index of an obstacle that the robot touches; none when it is clear.
   std::optional<std::size_t> first_colliding_obstacle(const std::vector<PlacedShape>& robot) const;
+  // Every obstacle the robot touches, in ascending order; empty when it is clear.
+  std::vector<std::size_t> colliding_obstacles(const std::vector<PlacedShape>& robot) const;
 
   // The smallest distance between any robot shape and any obstacle: 0 when they collide,
   // infinity when either set is empty. Exact up to FCL's GJK tolerance (1e-9 m) for primitive

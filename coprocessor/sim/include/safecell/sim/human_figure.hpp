@@ -19,6 +19,9 @@ struct HumanPose {
   double gait_phase_rad = 0.0;  // one gait cycle (two steps) is 2 pi; 0: legs passing each other
   double arm_raise_rad = 0.0;   // both arms raised forward about the shoulders; 0: hanging
   double gait_amplitude = 1.0;  // scales the leg and arm swing: 0 standing still, 1 walking
+  // Above 0: the right arm reaches out forward, elbow straight, raised this far from hanging
+  // (pi / 2: level with the shoulder), and does not swing. 0: it hangs and swings as the left.
+  double right_arm_reach_rad = 0.0;
 };
 
 // human_shapes() returns the parts in this order (left is the figure's own left).

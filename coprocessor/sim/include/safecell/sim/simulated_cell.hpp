@@ -40,14 +40,18 @@ class SimulatedCell {
   const RobotModel& robot() const { return robot_; }
   const std::vector<PlacedShape>& obstacles() const { return obstacles_; }
 
-  // One 8-bit frame per camera.
-  std::vector<cv::Mat> render(const SimScene& scene, std::uint64_t frame_index, double time_s);
+  // One 8-bit frame per camera. With `object_ids`, per camera also the renderer's object-id image
+  // (camera_renderer.hpp): the robot, static obstacle b, human n and object n of the scene by
+  // their body codes (body_id.hpp).
+  std::vector<cv::Mat> render(const SimScene& scene, std::uint64_t frame_index, double time_s,
+                              std::vector<cv::Mat>* object_ids = nullptr);
   // As render(), with any moving surfaces (none: the empty cell).
   std::vector<cv::Mat> render_surfaces(const std::vector<SurfaceMesh>& moving,
-                                       std::uint64_t frame_index, double time_s);
+                                       std::uint64_t frame_index, double time_s,
+                                       std::vector<cv::Mat>* object_ids = nullptr);
 
   // The robot, the humans and the objects as surfaces to render (robot first, then one or more
-  // per human, then one per object).
+  // per human, then one per object), each with its body code.
   std::vector<SurfaceMesh> moving_surfaces(const SimScene& scene) const;
   // Pixels of one camera the robot (as it appears) covers, occlusion ignored (CV_8UC1, 255 =
   // covered).

@@ -5,16 +5,18 @@
 #include <vector>
 
 #include "safecell/geometry/shape.hpp"
+#include "safecell/sim/body_id.hpp"
 
 namespace safecell {
 
 struct SurfaceMesh {
   TriangleMesh mesh;
   std::uint8_t albedo = 128;  // brightness when lit head-on, 0..255
+  BodyCode body = 0;          // what the object-id image shows where it is front-most
 };
 
 // Tessellates placed shapes (circumscribed, as everywhere) into one mesh of the given albedo.
 SurfaceMesh surface_of(const std::vector<PlacedShape>& shapes, std::uint8_t albedo,
-                       int segments = 16);
+                       BodyCode body = 0, int segments = 16);
 
 }  // namespace safecell

@@ -1,18 +1,14 @@
 #pragma once
 // `safecell validate`: the whole sensing pipeline on random scenes of the simulated cell, checked
-// against the exact collision ground truth (FCL). Per scene the robot stands at a random
-// configuration, one or more humans and up to `max_objects` boxes (objects the cell file does not
-// know: a crate left on the floor) at random places; the cameras render the scene, the pipeline
-// makes the forbidden map, and many robot configurations (half of them turned towards a human or
-// an object) are checked:
-//   missed          colliding with a human or object that at least `camera_threshold` cameras
-//                   saw (its feature cells are obstacles there after robot removal), or with a
-//                   static obstacle, yet not forbidden. Must be 0.
-//   unseen          colliding with a human or object fewer cameras saw (left to the other cameras
-//                   and the camera threshold; reported, not a failure of the fusion).
-//   false positive  forbidden but free.
-// Phantom cells: critical cells sampled per scene whose robot (at the cell centre) stays farther
-// than `phantom_distance_m` from every human and object, scaled up to the scene's critical cells.
+// against the exact ground truth (FCL for collisions, the renderer's object-id images for what
+// each camera sees), in the terms of ../shared/VALIDATION.md (scene_check.hpp). Scene s is of
+// stratum s mod 6 (scene_strata.hpp), its configurations of the three configuration strata in
+// turn (configuration_strata.hpp); each scene draws from its own generator, seeded with the run's
+// seed and s, so that a scene is the same whichever thread, shard or run takes it.
+//
+// Scenes run in parallel, one simulated cell and pipeline per thread. A run may be one shard of
+// many (`shard` K of N takes the K-th of N contiguous parts of the scenes); the reports of all
+// shards add up to the report of the whole run (operator+=), timings aside.
 
 #include <cstdint>
 #include <functional>
@@ -23,35 +19,54 @@
 #include "safecell/fusion/forbidden_map_fusion.hpp"
 #include "safecell/lut/lut_set.hpp"
 #include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/validation/negative_controls.hpp"
 #include "safecell/validation/scene_check.hpp"
+#include "safecell/validation/scene_strata.hpp"
 
 namespace safecell {
 
+struct Shard {
+  std::size_t index = 1;  // 1..count
+  std::size_t count = 1;
+};
+
 struct ValidationOptions {
-  std::size_t scenes = 200;
+  std::size_t scenes = 200;  // in the whole run, over all shards
   std::uint64_t seed = 1;
   std::size_t configurations_per_scene = 400;
-  int max_humans = 2;
-  int max_objects = 1;  // boxes per scene: 0..max_objects
+  SceneLimits limits;
   std::size_t reference_frames = 9;
-  std::size_t phantom_samples = 100;  // critical cells checked per scene
-  double phantom_distance_m = 0.5;
   FusionSettings fusion;
+  unsigned threads = 0;  // 0: one per hardware thread
+  Shard shard;
+  NegativeControl negative_control = NegativeControl::kNone;
 };
 
-// The checks of every scene added up (scene_check.hpp), and figures over the scenes.
+// The scenes [first, end) that shard `shard` of a run of `scenes` takes.
+struct SceneRange {
+  std::size_t first = 0;
+  std::size_t end = 0;
+};
+[[nodiscard]] SceneRange scenes_of_shard(std::size_t scenes, const Shard& shard);
+
+// The checks of every scene added up, and figures over the scenes. Everything but the timings
+// adds exactly over shards.
 struct ValidationReport : SceneCheck {
   std::size_t scenes = 0;
-  std::size_t objects = 0;  // boxes placed, over all scenes
-  double false_positive_rate = 0.0;
-  double phantom_cells = 0.0;    // mean per scene (estimated from samples)
-  double forbidden_share = 0.0;  // mean share of the grid forbidden per scene
-  double fusion_ms_p99 = 0.0;
-  double features_ms_p99 = 0.0;
+  std::size_t objects = 0;           // boxes placed, over all scenes
+  double forbidden_share_sum = 0.0;  // the grid's forbidden share, summed over the scenes
+  std::map<std::string, std::size_t> scenes_per_stratum;
+  double fusion_ms_p99 = 0.0;    // a merge keeps the largest
+  double features_ms_p99 = 0.0;  // a merge keeps the largest
+
+  ValidationReport& operator+=(const ValidationReport& other);
+  [[nodiscard]] double forbidden_share() const {
+    return scenes == 0 ? 0.0 : forbidden_share_sum / static_cast<double>(scenes);
+  }
 };
 
-// progress(scenes done, scenes). Throws std::invalid_argument for absurd options, or a cell
-// without a robot model.
+// progress(scenes done, scenes of the shard), from any thread but never from two at once.
+// Throws std::invalid_argument for absurd options, or a cell without a robot model.
 [[nodiscard]] ValidationReport validate_against_ground_truth(
     const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
     const RobotSilhouettes& silhouettes, const ValidationOptions& options,

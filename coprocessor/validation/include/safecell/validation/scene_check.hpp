@@ -1,25 +1,52 @@
 #pragma once
-// Checks one processed scene of the simulated cell against the exact ground truth: robot
-// configurations (half random, half turned towards a human) are tested for collision with FCL and
-// compared with the forbidden map the pipeline made (definitions in ground_truth_validation.hpp).
-// The scene's humans and objects are its moving obstacles; the cell file's boxes are static.
+// Checks one processed scene of the simulated cell against the exact ground truth
+// (../shared/VALIDATION.md). Robot configurations of the three configuration strata
+// (configuration_strata.hpp) are tested for collision with FCL, against every body they touch,
+// and compared with the forbidden map the pipeline made:
+//   missed    the configuration touches a static obstacle, or a human or object visible
+//             (body_visibility.hpp, from the renderer's object-id images) in at least
+//             `camera_threshold` cameras, and its cell is not forbidden. Must be 0.
+//   unseen    it collides, but every body it touches is visible in fewer cameras; counted with
+//             the reason of the first such body (the reason most of the cameras that miss it
+//             give), and whether the cell is forbidden all the same.
+//   clear     its robot stays at least `clear_distance_m` from every body (static ones too);
+//             forbidden clear configurations are needless stops.
+// Scene-level counts go to the scene's stratum and to the configuration's stratum both.
 // Shared by `safecell validate` and `safecell demo`.
 
+#include <cstddef>
+#include <map>
+#include <opencv2/core/mat.hpp>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
-#include "safecell/pipeline/sensing_pipeline.hpp"
+#include "safecell/lut/cell_set.hpp"
 #include "safecell/sim/simulated_cell.hpp"
+#include "safecell/validation/body_visibility.hpp"
 
 namespace safecell {
 
 struct MissedCollision {
   std::size_t scene = 0;
+  std::string stratum;  // the scene's
   std::vector<double> q;
-  std::string obstacle;
-  int cameras_seeing = 0;
+  std::string body;
+  int cameras_visible = 0;
+};
+
+// The figures of one stratum, all additive.
+struct StratumCounts {
+  std::size_t configs = 0;
+  std::size_t colliding = 0;
+  std::size_t missed = 0;
+  std::size_t unseen = 0;
+  std::size_t clear = 0;
+  std::size_t clear_forbidden = 0;
+
+  StratumCounts& operator+=(const StratumCounts& other);
+  friend bool operator==(const StratumCounts&, const StratumCounts&) = default;
 };
 
 struct SceneCheck {
@@ -27,38 +54,41 @@ struct SceneCheck {
   std::size_t colliding = 0;
   std::size_t missed = 0;
   std::size_t unseen = 0;
-  std::size_t free = 0;
-  std::size_t false_positives = 0;
-  std::vector<MissedCollision> missed_cases;
-  std::vector<int> cameras_seeing;  // per human, then per object
+  std::size_t unseen_forbidden = 0;  // unseen, yet forbidden all the same
+  UnseenReasons unseen_reasons{};
+  std::size_t free = 0;             // not colliding
+  std::size_t false_positives = 0;  // free but forbidden
+  std::size_t clear = 0;
+  std::size_t clear_forbidden = 0;
+  std::size_t bodies = 0;                 // humans and objects placed
+  std::size_t bodies_visible_enough = 0;  // visible in at least camera_threshold cameras
+  std::map<std::string, StratumCounts> strata;
+  std::vector<MissedCollision> missed_cases;  // the first few
 
   SceneCheck& operator+=(const SceneCheck& other);
   // Forbidden but free, as a share of the free configurations checked.
-  [[nodiscard]] double false_positive_rate() const {
-    return free == 0 ? 0.0 : static_cast<double>(false_positives) / static_cast<double>(free);
-  }
+  [[nodiscard]] double false_positive_rate() const;
+  // Forbidden among the clear configurations.
+  [[nodiscard]] double needless_stop_share() const;
 };
 
-// Joint values drawn uniformly within the grid's ranges.
-[[nodiscard]] std::vector<double> random_configuration(const CspaceGrid& grid,
-                                                       std::mt19937_64& rng);
+// One scene and what the pipeline made of its frames.
+struct SceneUnderTest {
+  const SimScene& scene;
+  const std::vector<cv::Mat>& object_ids;  // per camera, from rendering the scene's frames
+  const CellSet& forbidden;                // the pipeline's forbidden map for those frames
+  int camera_threshold = 2;
+  std::string stratum;  // the scene's stratum, for the report
+  std::size_t index = 0;
+};
 
-// `pipeline` has just processed the frames of the scene (robot at scene.q, the humans).
+inline constexpr double kClearDistance_m = 0.5;
+
 [[nodiscard]] SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid,
-                                     SimulatedCell& sim, const SensingPipeline& pipeline,
-                                     const SimScene& scene, std::size_t configurations,
-                                     std::mt19937_64& rng, std::size_t scene_index);
+                                     SimulatedCell& sim, const SceneUnderTest& under_test,
+                                     std::size_t configurations, std::mt19937_64& rng);
 
 // The shapes of the scene's humans and objects.
 [[nodiscard]] std::vector<PlacedShape> moving_bodies(const SimScene& scene);
-
-// Critical cells of the last cycle whose robot, at the cell's centre, stays farther than
-// `distance_m` from every body (moving_bodies()): sampled (`samples` cells) and scaled to all
-// critical cells.
-[[nodiscard]] double estimate_phantom_cells(const CellModel& cell, const CspaceGrid& grid,
-                                            const SensingPipeline& pipeline,
-                                            const std::vector<PlacedShape>& bodies,
-                                            std::size_t samples, double distance_m,
-                                            std::mt19937_64& rng);
 
 }  // namespace safecell

@@ -1,0 +1,158 @@
+#include "validation_json.hpp"
+
+#include <stdexcept>
+
+namespace safecell {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json stratum_json(const StratumCounts& counts) {
+  return {{"configs", counts.configs},
+          {"colliding", counts.colliding},
+          {"missed", counts.missed},
+          {"unseen", counts.unseen},
+          {"clear", counts.clear},
+          {"clear_forbidden", counts.clear_forbidden},
+          {"needless_stop_share", counts.clear == 0 ? 0.0
+                                                    : static_cast<double>(counts.clear_forbidden) /
+                                                          static_cast<double>(counts.clear)}};
+}
+
+// The value at `key`, checked: a missing key or one of another type is refused by name.
+template <typename T>
+T field(const nlohmann::json& json, const std::string& key, const std::string& source) {
+  const auto found = json.find(key);
+  if (found == json.end()) {
+    throw std::invalid_argument(source + ": key '" + key + "' missing, expected a report of " +
+                                "`safecell validate --json`");
+  }
+  try {
+    return found->get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw std::invalid_argument(source + ": key '" + key + "' holds " + found->dump() +
+                                ", expected a value of another type");
+  }
+}
+
+StratumCounts stratum_from(const nlohmann::json& json, const std::string& source) {
+  StratumCounts counts;
+  counts.configs = field<std::size_t>(json, "configs", source);
+  counts.colliding = field<std::size_t>(json, "colliding", source);
+  counts.missed = field<std::size_t>(json, "missed", source);
+  counts.unseen = field<std::size_t>(json, "unseen", source);
+  counts.clear = field<std::size_t>(json, "clear", source);
+  counts.clear_forbidden = field<std::size_t>(json, "clear_forbidden", source);
+  return counts;
+}
+
+}  // namespace
+
+nlohmann::ordered_json validation_json(const ValidationRun& run, const ValidationReport& report) {
+  Json json;
+  json["scenes"] = report.scenes;
+  json["configs_checked"] = report.configs_checked;
+  json["colliding"] = report.colliding;
+  json["missed"] = report.missed;
+  json["unseen"] = report.unseen;
+  Json reasons = Json::object();
+  for (std::size_t r = 0; r < kUnseenReasonCount; ++r) {
+    reasons[to_string(static_cast<UnseenReason>(r))] = report.unseen_reasons[r];
+  }
+  json["unseen_reasons"] = std::move(reasons);
+  json["unseen_forbidden"] = report.unseen_forbidden;
+  json["free"] = report.free;
+  json["false_positives"] = report.false_positives;
+  json["false_positive_rate"] = report.false_positive_rate();
+  json["clear"] = report.clear;
+  json["clear_forbidden"] = report.clear_forbidden;
+  json["needless_stop_share"] = report.needless_stop_share();
+  json["bodies"] = report.bodies;
+  json["bodies_visible_enough"] = report.bodies_visible_enough;
+  json["objects"] = report.objects;
+  json["forbidden_share"] = report.forbidden_share();
+  json["forbidden_share_sum"] = report.forbidden_share_sum;
+  json["scenes_per_stratum"] = report.scenes_per_stratum;
+  Json strata = Json::object();
+  for (const auto& [name, counts] : report.strata) strata[name] = stratum_json(counts);
+  json["strata"] = std::move(strata);
+  json["features_ms_p99"] = report.features_ms_p99;
+  json["fusion_ms_p99"] = report.fusion_ms_p99;
+  json["seed"] = run.seed;
+  json["scenes_in_run"] = run.scenes;
+  json["configs_per_scene"] = run.configurations_per_scene;
+  json["camera_threshold"] = run.camera_threshold;
+  json["removal"] = run.removal;
+  json["negative_control"] = run.negative_control;
+  json["shard_count"] = run.shard_count;
+  json["shards"] = run.shards;
+  Json cases = Json::array();
+  for (const auto& missed : report.missed_cases) {
+    cases.push_back({{"scene", missed.scene},
+                     {"stratum", missed.stratum},
+                     {"q_rad", missed.q},
+                     {"body", missed.body},
+                     {"cameras_visible", missed.cameras_visible}});
+  }
+  json["missed_cases"] = std::move(cases);
+  return json;
+}
+
+void read_validation_json(const nlohmann::json& json, const std::string& source, ValidationRun& run,
+                          ValidationReport& report) {
+  if (!json.is_object()) {
+    throw std::invalid_argument(source + ": not a JSON object, expected a report of " +
+                                "`safecell validate --json`");
+  }
+  report = ValidationReport{};
+  report.scenes = field<std::size_t>(json, "scenes", source);
+  report.configs_checked = field<std::size_t>(json, "configs_checked", source);
+  report.colliding = field<std::size_t>(json, "colliding", source);
+  report.missed = field<std::size_t>(json, "missed", source);
+  report.unseen = field<std::size_t>(json, "unseen", source);
+  const auto reasons = field<nlohmann::json>(json, "unseen_reasons", source);
+  for (std::size_t r = 0; r < kUnseenReasonCount; ++r) {
+    report.unseen_reasons[r] =
+        field<std::size_t>(reasons, to_string(static_cast<UnseenReason>(r)), source);
+  }
+  report.unseen_forbidden = field<std::size_t>(json, "unseen_forbidden", source);
+  report.free = field<std::size_t>(json, "free", source);
+  report.false_positives = field<std::size_t>(json, "false_positives", source);
+  report.clear = field<std::size_t>(json, "clear", source);
+  report.clear_forbidden = field<std::size_t>(json, "clear_forbidden", source);
+  report.bodies = field<std::size_t>(json, "bodies", source);
+  report.bodies_visible_enough = field<std::size_t>(json, "bodies_visible_enough", source);
+  report.objects = field<std::size_t>(json, "objects", source);
+  report.forbidden_share_sum = field<double>(json, "forbidden_share_sum", source);
+  report.scenes_per_stratum =
+      field<std::map<std::string, std::size_t>>(json, "scenes_per_stratum", source);
+  const auto strata = field<nlohmann::json>(json, "strata", source);
+  if (!strata.is_object()) {
+    throw std::invalid_argument(source + ": key 'strata' holds " + strata.dump() +
+                                ", expected an object of strata");
+  }
+  for (const auto& [name, counts] : strata.items()) {
+    std::string where = source;
+    where.append(": strata.").append(name);
+    report.strata[name] = stratum_from(counts, where);
+  }
+  report.features_ms_p99 = field<double>(json, "features_ms_p99", source);
+  report.fusion_ms_p99 = field<double>(json, "fusion_ms_p99", source);
+  const auto missed_cases = field<nlohmann::json>(json, "missed_cases", source);
+  for (const auto& missed : missed_cases) {
+    report.missed_cases.push_back(MissedCollision{
+        field<std::size_t>(missed, "scene", source), field<std::string>(missed, "stratum", source),
+        field<std::vector<double>>(missed, "q_rad", source),
+        field<std::string>(missed, "body", source), field<int>(missed, "cameras_visible", source)});
+  }
+  run.seed = field<std::uint64_t>(json, "seed", source);
+  run.scenes = field<std::size_t>(json, "scenes_in_run", source);
+  run.configurations_per_scene = field<std::size_t>(json, "configs_per_scene", source);
+  run.camera_threshold = field<int>(json, "camera_threshold", source);
+  run.removal = field<std::string>(json, "removal", source);
+  run.negative_control = field<std::string>(json, "negative_control", source);
+  run.shard_count = field<std::size_t>(json, "shard_count", source);
+  run.shards = field<std::vector<std::size_t>>(json, "shards", source);
+}
+
+}  // namespace safecell
