@@ -119,6 +119,37 @@ TEST_F(GroundTruthValidation, ShardsAndThreadsAddUpToTheWholeRun) {
   EXPECT_NEAR(merged.forbidden_share_sum, whole.forbidden_share_sum, 1e-9);
 }
 
+TEST_F(GroundTruthValidation, TheDocumentedModelErrorIsCoveredAndChangesTheWorld) {
+  ValidationOptions options = fixed_seed();
+  options.scenes = 24;
+  const ValidationReport exact = validate(options);
+  options.model_error = kDocumentedTolerances;
+  const ValidationReport with_error = validate(options);
+  EXPECT_EQ(with_error.missed, 0U);
+  for (const auto& missed : with_error.missed_cases) {
+    ADD_FAILURE() << "missed: scene " << missed.scene << " (" << missed.stratum << "), "
+                  << missed.body;
+  }
+  // The larger robot of the world collides more often: the ground truth is the world's.
+  EXPECT_GT(with_error.colliding, exact.colliding);
+}
+
+TEST_F(GroundTruthValidation, NeedlessStopsAreTracedToACause) {
+  ValidationOptions options = fixed_seed();
+  options.scenes = 12;
+  options.needless_stops_traced_per_scene = 3;
+  const ValidationReport report = validate(options);
+  EXPECT_GT(report.clear_forbidden, 0U);
+  EXPECT_GT(report.causes.traced, 0U);
+  EXPECT_LE(report.causes.traced, std::min<std::size_t>(report.clear_forbidden, 3 * 12));
+  EXPECT_EQ(report.causes.in_cell + report.causes.visual_hull + report.causes.envelope,
+            report.causes.traced);
+  options.needless_stops_traced_per_scene = 0;
+  const ValidationReport untraced = validate(options);
+  EXPECT_EQ(untraced.causes.traced, 0U);
+  EXPECT_EQ(untraced.strata, report.strata) << "tracing must not change what is sampled";
+}
+
 TEST_F(GroundTruthValidation, AbsurdOptionsAreRefused) {
   ValidationOptions options;
   options.scenes = 0;

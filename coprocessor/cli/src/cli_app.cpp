@@ -218,6 +218,54 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                                "Folder of cached look-up tables; default $SAFECELL_CACHE or "
                                "~/.cache/safecell");
   validate_command
+      ->add_option("--padding", validate.padding_m,
+                   "Margin added all round the robot in the tables and in robot removal, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  validate_command
+      ->add_option("--ball-radius", validate.ball_radius_m,
+                   "Size of the balls covering the robot, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.005, 0.5));
+  validate_command
+      ->add_option("--m-max", validate.m_max_m,
+                   "Max-move m_max of the C-space grid, metres (default: the cell's)")
+      ->check(CLI::Range(0.01, 1.0));
+  validate_command
+      ->add_option("--camera-threshold", validate.camera_threshold,
+                   "Cameras that must see a cell blocked (default: the cell's)")
+      ->check(CLI::Range(1, 64));
+  validate_command->add_flag(
+      "--model-error", validate.documented_model_error,
+      "Apply the documented tolerances to the simulated world: cameras turned 0.5 deg and moved "
+      "1 cm, focal length 1 % off, lens k1 -0.02, the robot 5 mm larger");
+  validate_command
+      ->add_option("--camera-rotation-error", validate.camera_rotation_error_deg,
+                   "Each simulated camera turned this far about a random axis, degrees")
+      ->check(CLI::Range(0.0, 10.0));
+  validate_command
+      ->add_option("--camera-translation-error", validate.camera_translation_error_m,
+                   "Each simulated camera moved this far, metres")
+      ->check(CLI::Range(0.0, 0.5));
+  validate_command
+      ->add_option("--focal-error", validate.focal_error,
+                   "Each simulated camera's focal length off by this fraction (0.01: 1 %)")
+      ->check(CLI::Range(0.0, 0.2));
+  CLI::Option* lens_k1 =
+      validate_command
+          ->add_option("--lens-k1", validate.lens_k1,
+                       "Radial distortion of the simulated lenses the model does not know")
+          ->check(CLI::Range(-0.5, 0.5));
+  validate_command
+      ->add_option("--robot-growth", validate.robot_growth_m,
+                   "The simulated robot this much larger all round than its model, metres")
+      ->check(CLI::Range(0.0, 0.2));
+  validate_command
+      ->add_option("--trace-needless-stops", validate.traced_per_scene,
+                   "Needless stops per scene traced to a cause (cell size, visual hull, envelope)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  validate_command
       ->add_option("--negative-control", validate.negative_control,
                    "Break the pipeline on purpose to show the check fails: none, empty-masks, "
                    "dropped-strip or envelope-removal")
@@ -242,6 +290,7 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   merge_command->callback([&] { action = [&] { exit_code = run_validate_merge(merge, out); }; });
   validate_command->callback([&] {
     if (merge_command->parsed()) return;
+    validate.lens_k1_set = lens_k1->count() > 0;
     action = [&] { exit_code = run_validate(validate, out, err); };
   });
 

@@ -109,7 +109,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   const fs::path out_dir(options.out_dir);
   for (const char* sub : {"views", "slices"}) fs::create_directories(out_dir / sub);
 
-  const CachedLuts luts = cell_luts(cell, grid, options.lut_cache, err);
+  const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
   const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
   SensorSettings sensor;
   sensor.seed = options.seed;

@@ -12,11 +12,11 @@ constexpr const char* kStages[kLutBuildStages] = {"building LUT-1 silhouettes", 
 
 }  // namespace
 
-CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const std::string& cache_folder,
-                     std::ostream& err) {
+CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
+                     const std::string& cache_folder, std::ostream& err) {
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   CachedLuts luts = model_luts_cached(
-      cell, grid, ModelLutOptions{},
+      cell, grid, options,
       cache_folder.empty() ? default_lut_cache_folder() : std::filesystem::path(cache_folder),
       [&bar](int stage, double fraction) { bar.update(kStages[stage], fraction); });
   bar.finish();

@@ -10,7 +10,7 @@
 namespace safecell {
 
 // cache_folder: empty for the default. Messages (build, rebuild reason) go to `err`.
-CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const std::string& cache_folder,
-                     std::ostream& err);
+CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
+                     const std::string& cache_folder, std::ostream& err);
 
 }  // namespace safecell

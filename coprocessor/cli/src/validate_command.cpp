@@ -42,6 +42,20 @@ Shard shard_of(const std::string& text, std::size_t scenes) {
   return shard;
 }
 
+ModelError model_error_of(const ValidateOptions& options) {
+  ModelError error = options.documented_model_error ? kDocumentedTolerances : ModelError{};
+  if (options.camera_rotation_error_deg >= 0.0) {
+    error.camera_rotation_deg = options.camera_rotation_error_deg;
+  }
+  if (options.camera_translation_error_m >= 0.0) {
+    error.camera_translation_m = options.camera_translation_error_m;
+  }
+  if (options.focal_error >= 0.0) error.focal_error = options.focal_error;
+  if (options.lens_k1_set) error.lens_k1 = options.lens_k1;
+  if (options.robot_growth_m >= 0.0) error.robot_growth_m = options.robot_growth_m;
+  return error;
+}
+
 std::string percent(double share) { return fixed(100.0 * share, 2) + " %"; }
 
 void print_report(const ValidationRun& run, const ValidationReport& report, std::ostream& out) {
@@ -64,6 +78,23 @@ void print_report(const ValidationRun& run, const ValidationReport& report, std:
       << " configurations at least 0.5 m from every body; false positives "
       << percent(report.false_positive_rate()) << " of free ones; forbidden "
       << percent(report.forbidden_share()) << " of the grid on average\n";
+  if (report.causes.traced > 0) {
+    const auto share = [&report](std::size_t part) {
+      return percent(static_cast<double>(part) / static_cast<double>(report.causes.traced));
+    };
+    out << "  needless stops traced: " << grouped(report.causes.traced) << ", the cell holds a "
+        << "collision " << share(report.causes.in_cell) << ", visual hull / phantoms "
+        << share(report.causes.visual_hull) << ", envelope width " << share(report.causes.envelope)
+        << "\n";
+  }
+  if (run.model_error.any()) {
+    out << "  model error in the simulated world: cameras turned "
+        << fixed(run.model_error.camera_rotation_deg, 2) << " deg, moved "
+        << fixed(100.0 * run.model_error.camera_translation_m, 1) << " cm, focal length +-"
+        << fixed(100.0 * run.model_error.focal_error, 1) << " %, lens k1 "
+        << fixed(run.model_error.lens_k1, 3) << "; robot "
+        << fixed(1000.0 * run.model_error.robot_growth_m, 1) << " mm larger\n";
+  }
   using Align = TextTable::Align;
   TextTable table({{"stratum", Align::kLeft},
                    {"configs", Align::kRight},
@@ -99,8 +130,12 @@ int emit(const ValidationRun& run, const ValidationReport& report, bool json, st
 }  // namespace
 
 int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream& err) {
-  const CellModel cell = load_cell_model(load_cell_file_or_default(options.cell_path));
+  CellConfig config = load_cell_file_or_default(options.cell_path);
+  if (options.m_max_m > 0.0) config.m_max_m = options.m_max_m;
+  if (options.camera_threshold > 0) config.camera_threshold = options.camera_threshold;
+  const CellModel cell = load_cell_model(std::move(config));
   const CspaceGrid grid = make_grid(cell.config);
+  const ModelLutOptions tables{options.ball_radius_m, options.padding_m};
   ValidationOptions validation;
   validation.scenes = options.scenes;
   validation.seed = options.seed;
@@ -111,17 +146,30 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   validation.negative_control = control_of(options.negative_control);
   validation.shard = shard_of(options.shard, options.scenes);
   validation.threads = options.threads;
-  const CachedLuts luts = cell_luts(cell, grid, options.lut_cache, err);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  validation.fusion.padding_m = options.padding_m;
+  validation.model_error = model_error_of(options);
+  validation.needless_stops_traced_per_scene = options.traced_per_scene;
+  const CachedLuts luts = cell_luts(cell, grid, tables, options.lut_cache, err);
+  const ModelSilhouettes silhouettes(cell, grid, tables);
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   const ValidationReport report = validate_against_ground_truth(
       cell, grid, luts.set, silhouettes, validation, [&bar](std::size_t done, std::size_t total) {
         bar.update("validating scenes", static_cast<double>(done) / static_cast<double>(total));
       });
   bar.finish();
-  const ValidationRun run{options.seed,           options.scenes,          options.configurations,
-                          cell.camera_threshold,  options.removal,         options.negative_control,
-                          validation.shard.count, {validation.shard.index}};
+  ValidationRun run;
+  run.seed = options.seed;
+  run.scenes = options.scenes;
+  run.configurations_per_scene = options.configurations;
+  run.camera_threshold = cell.camera_threshold;
+  run.removal = options.removal;
+  run.negative_control = options.negative_control;
+  run.padding_m = options.padding_m;
+  run.ball_radius_m = options.ball_radius_m;
+  run.m_max_m = cell.config.m_max_m;
+  run.model_error = validation.model_error;
+  run.shard_count = validation.shard.count;
+  run.shards = {validation.shard.index};
   return emit(run, report, options.json, out);
 }
 
@@ -145,15 +193,10 @@ int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
     if (f == 0) {
       merged_run = run;
       merged_run.shards.clear();
-    } else if (run.seed != merged_run.seed || run.scenes != merged_run.scenes ||
-               run.configurations_per_scene != merged_run.configurations_per_scene ||
-               run.camera_threshold != merged_run.camera_threshold ||
-               run.removal != merged_run.removal ||
-               run.negative_control != merged_run.negative_control ||
-               run.shard_count != merged_run.shard_count) {
+    } else if (!same_run(run, merged_run)) {
       throw std::invalid_argument(path + ": a shard of another run than " + options.files[0] +
-                                  " (seed, scenes, configs, threshold, removal, control and "
-                                  "shard count must agree)");
+                                  " (seed, scenes, configs, threshold, removal, control, table "
+                                  "settings, model error and shard count must agree)");
     }
     for (const std::size_t shard : run.shards) {
       if (std::find(merged_run.shards.begin(), merged_run.shards.end(), shard) !=

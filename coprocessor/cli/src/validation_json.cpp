@@ -48,6 +48,20 @@ StratumCounts stratum_from(const nlohmann::json& json, const std::string& source
 
 }  // namespace
 
+bool same_run(const ValidationRun& a, const ValidationRun& b) {
+  const auto same_error = [](const ModelError& x, const ModelError& y) {
+    return x.camera_rotation_deg == y.camera_rotation_deg &&
+           x.camera_translation_m == y.camera_translation_m && x.focal_error == y.focal_error &&
+           x.lens_k1 == y.lens_k1 && x.robot_growth_m == y.robot_growth_m;
+  };
+  return a.seed == b.seed && a.scenes == b.scenes &&
+         a.configurations_per_scene == b.configurations_per_scene &&
+         a.camera_threshold == b.camera_threshold && a.removal == b.removal &&
+         a.negative_control == b.negative_control && a.padding_m == b.padding_m &&
+         a.ball_radius_m == b.ball_radius_m && a.m_max_m == b.m_max_m &&
+         same_error(a.model_error, b.model_error) && a.shard_count == b.shard_count;
+}
+
 nlohmann::ordered_json validation_json(const ValidationRun& run, const ValidationReport& report) {
   Json json;
   json["scenes"] = report.scenes;
@@ -67,6 +81,18 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["clear"] = report.clear;
   json["clear_forbidden"] = report.clear_forbidden;
   json["needless_stop_share"] = report.needless_stop_share();
+  const auto share_of = [&report](std::size_t part) {
+    return report.causes.traced == 0
+               ? 0.0
+               : static_cast<double>(part) / static_cast<double>(report.causes.traced);
+  };
+  json["needless_stop_causes"] = {{"traced", report.causes.traced},
+                                  {"in_cell", report.causes.in_cell},
+                                  {"visual_hull", report.causes.visual_hull},
+                                  {"envelope", report.causes.envelope},
+                                  {"in_cell_share", share_of(report.causes.in_cell)},
+                                  {"visual_hull_share", share_of(report.causes.visual_hull)},
+                                  {"envelope_share", share_of(report.causes.envelope)}};
   json["bodies"] = report.bodies;
   json["bodies_visible_enough"] = report.bodies_visible_enough;
   json["objects"] = report.objects;
@@ -84,6 +110,14 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["camera_threshold"] = run.camera_threshold;
   json["removal"] = run.removal;
   json["negative_control"] = run.negative_control;
+  json["padding_m"] = run.padding_m;
+  json["ball_radius_m"] = run.ball_radius_m;
+  json["m_max_m"] = run.m_max_m;
+  json["model_error"] = {{"camera_rotation_deg", run.model_error.camera_rotation_deg},
+                         {"camera_translation_m", run.model_error.camera_translation_m},
+                         {"focal_error", run.model_error.focal_error},
+                         {"lens_k1", run.model_error.lens_k1},
+                         {"robot_growth_m", run.model_error.robot_growth_m}};
   json["shard_count"] = run.shard_count;
   json["shards"] = run.shards;
   Json cases = Json::array();
@@ -120,6 +154,11 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
   report.false_positives = field<std::size_t>(json, "false_positives", source);
   report.clear = field<std::size_t>(json, "clear", source);
   report.clear_forbidden = field<std::size_t>(json, "clear_forbidden", source);
+  const auto causes = field<nlohmann::json>(json, "needless_stop_causes", source);
+  report.causes.traced = field<std::size_t>(causes, "traced", source);
+  report.causes.in_cell = field<std::size_t>(causes, "in_cell", source);
+  report.causes.visual_hull = field<std::size_t>(causes, "visual_hull", source);
+  report.causes.envelope = field<std::size_t>(causes, "envelope", source);
   report.bodies = field<std::size_t>(json, "bodies", source);
   report.bodies_visible_enough = field<std::size_t>(json, "bodies_visible_enough", source);
   report.objects = field<std::size_t>(json, "objects", source);
@@ -151,6 +190,15 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
   run.camera_threshold = field<int>(json, "camera_threshold", source);
   run.removal = field<std::string>(json, "removal", source);
   run.negative_control = field<std::string>(json, "negative_control", source);
+  run.padding_m = field<double>(json, "padding_m", source);
+  run.ball_radius_m = field<double>(json, "ball_radius_m", source);
+  run.m_max_m = field<double>(json, "m_max_m", source);
+  const auto error = field<nlohmann::json>(json, "model_error", source);
+  run.model_error.camera_rotation_deg = field<double>(error, "camera_rotation_deg", source);
+  run.model_error.camera_translation_m = field<double>(error, "camera_translation_m", source);
+  run.model_error.focal_error = field<double>(error, "focal_error", source);
+  run.model_error.lens_k1 = field<double>(error, "lens_k1", source);
+  run.model_error.robot_growth_m = field<double>(error, "robot_growth_m", source);
   run.shard_count = field<std::size_t>(json, "shard_count", source);
   run.shards = field<std::vector<std::size_t>>(json, "shards", source);
 }

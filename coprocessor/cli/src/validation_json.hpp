@@ -19,12 +19,19 @@ struct ValidationRun {
   int camera_threshold = 2;
   std::string removal;
   std::string negative_control;
+  double padding_m = 0.0;
+  double ball_radius_m = 0.0;
+  double m_max_m = 0.0;
+  ModelError model_error;
   std::size_t shard_count = 1;
   std::vector<std::size_t> shards;  // which of them this report holds (1-based)
 };
 
 [[nodiscard]] nlohmann::ordered_json validation_json(const ValidationRun& run,
                                                      const ValidationReport& report);
+
+// Whether two runs are shards of one run: everything but the shards agrees.
+[[nodiscard]] bool same_run(const ValidationRun& a, const ValidationRun& b);
 
 // Reads a report written by validation_json(). Throws std::invalid_argument naming `source`,
 // the key and what was expected when the JSON is not such a report.

@@ -57,28 +57,35 @@ struct SceneResult {
 // One thread's simulated cell and pipeline (neither is thread-safe).
 class Worker {
  public:
-  Worker(const CellModel& cell, const CspaceGrid& grid, const LutSet& luts,
+  // cell: the model; world: the simulated cell as it really is (model_error.hpp).
+  Worker(const CellModel& cell, const CellModel& world, const CspaceGrid& grid, const LutSet& luts,
          const RobotSilhouettes& silhouettes, const std::vector<cv::Mat>& reference,
          const ValidationOptions& options)
-      : cell_(cell),
+      : world_(world),
         grid_(grid),
         options_(options),
-        sim_(simulate_cell(cell, sensor_of(options))),
+        sim_(simulate_cell(world, sensor_of(options))),
         pipeline_(cell, grid, luts, silhouettes, reference, {}, options.fusion),
         no_masks_(luts, silhouettes, options.fusion) {}
 
   SceneResult run(std::size_t s) {
     std::mt19937_64 rng = scene_generator(options_.seed, s);
     const SceneStratum wanted = kAllSceneStrata[s % kSceneStrata];
-    const StratifiedScene placed = make_scene(wanted, cell_, grid_, options_.limits, rng);
+    const StratifiedScene placed = make_scene(wanted, world_, grid_, options_.limits, rng);
     std::vector<cv::Mat> object_ids;
     const auto frames =
         sim_.render(placed.scene, 10 * s, 0.1 * static_cast<double>(s), &object_ids);
     const CellSet* forbidden = &pipeline_.process(frames, placed.scene.q);
+    const ForbiddenMapFusion* fusion = &pipeline_.fusion();
     if (options_.negative_control == NegativeControl::kEmptyMasks) {
       std::vector<CameraObservation> blind = pipeline_.observations();
       for (auto& observation : blind) observation.blocked.clear();
       forbidden = &no_masks_.fuse(blind, pipeline_.robot_cell());
+      fusion = &no_masks_;
+    }
+    obstacles_.clear();
+    for (std::size_t c = 0; c < fusion->camera_count(); ++c) {
+      obstacles_.push_back(fusion->obstacles(c));
     }
     SceneResult result;
     result.fusion_ms = pipeline_.times().fusion_ms;
@@ -88,9 +95,11 @@ class Worker {
                                     *forbidden,
                                     options_.fusion.camera_threshold,
                                     to_string(placed.stratum),
-                                    s};
+                                    s,
+                                    &obstacles_,
+                                    options_.needless_stops_traced_per_scene};
     static_cast<SceneCheck&>(result.report) =
-        check_scene(cell_, grid_, sim_, under_test, options_.configurations_per_scene, rng);
+        check_scene(world_, grid_, sim_, under_test, options_.configurations_per_scene, rng);
     result.report.scenes = 1;
     result.report.objects = placed.scene.objects.size();
     result.report.forbidden_share_sum =
@@ -106,12 +115,13 @@ class Worker {
     return sensor;
   }
 
-  const CellModel& cell_;
+  const CellModel& world_;
   const CspaceGrid& grid_;
   const ValidationOptions& options_;
   SimulatedCell sim_;
   SensingPipeline pipeline_;
   ForbiddenMapFusion no_masks_;  // the empty-masks negative control
+  std::vector<FeatureMask> obstacles_;
 };
 
 }  // namespace
@@ -146,10 +156,11 @@ ValidationReport validate_against_ground_truth(
   const LutSet& tables =
       options.negative_control == NegativeControl::kDroppedStrip ? damaged : luts;
 
+  const CellModel world = world_with_error(cell, options.model_error, options.seed);
   std::vector<cv::Mat> reference;
   {
-    SimulatedCell sim = simulate_cell(cell, SensorSettings{.seed = options.seed});
-    reference = simulated_reference(sim, cell, options.reference_frames, options.seed).frames;
+    SimulatedCell sim = simulate_cell(world, SensorSettings{.seed = options.seed});
+    reference = simulated_reference(sim, world, options.reference_frames, options.seed).frames;
   }
   const SceneRange range = scenes_of_shard(options.scenes, options.shard);
   const std::size_t count = range.end - range.first;
@@ -164,7 +175,7 @@ ValidationReport validate_against_ground_truth(
   std::exception_ptr failure;
   const auto work = [&] {
     try {
-      Worker worker(cell, grid, tables, silhouettes, reference, effective);
+      Worker worker(cell, world, grid, tables, silhouettes, reference, effective);
       for (std::size_t k = next++; k < count; k = next++) {
         results[k] = worker.run(range.first + k);
         const std::lock_guard lock(progress_mutex);

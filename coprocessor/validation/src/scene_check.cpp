@@ -62,7 +62,55 @@ std::vector<CheckedBody> check_bodies(const CellModel& cell, SimulatedCell& sim,
   return bodies;
 }
 
+constexpr int kInCellSamples = 24;     // configurations tried for a collision in the cell
+constexpr int kSilhouetteSamples = 6;  // configurations whose exact silhouettes are rendered
+
+enum class NeedlessStopCause { kInCell, kVisualHull, kEnvelope };
+
+// Why the clear configuration q is forbidden (see scene_check.hpp).
+NeedlessStopCause cause_of_needless_stop(const CellModel& cell, const CspaceGrid& grid,
+                                         SimulatedCell& sim, const GroundTruth& truth,
+                                         const SceneUnderTest& under_test,
+                                         const std::vector<double>& q, std::mt19937_64& rng) {
+  const CellIndex at = cell_of(grid, q);
+  for (int k = 0; k < kInCellSamples; ++k) {
+    if (truth.collides(collision_shapes_at(*cell.robot, configuration_in_cell(grid, at, rng)))) {
+      return NeedlessStopCause::kInCell;
+    }
+  }
+  const FeatureGrid& features = cell.feature_grid;
+  std::vector<FeatureMask> exact(sim.camera_count(), FeatureMask(features));
+  for (int k = 0; k < kSilhouetteSamples; ++k) {
+    const std::vector<double> sample = configuration_in_cell(grid, at, rng);
+    for (std::size_t c = 0; c < sim.camera_count(); ++c) {
+      const cv::Mat covered = sim.robot_coverage(c, sample);
+      for (int y = 0; y < covered.rows; ++y) {
+        const auto* row = covered.ptr<std::uint8_t>(y);
+        for (int x = 0; x < covered.cols; ++x) {
+          if (row[x] != 0)
+            exact[c].set(x / features.cell_width_px(), y / features.cell_height_px());
+        }
+      }
+    }
+  }
+  int meeting = 0;
+  for (std::size_t c = 0; c < sim.camera_count(); ++c) {
+    const FeatureMask& obstacles = (*under_test.obstacles)[c];
+    meeting += obstacles.columns() == exact[c].columns() && exact[c].intersects(obstacles) ? 1 : 0;
+  }
+  return meeting >= under_test.camera_threshold ? NeedlessStopCause::kVisualHull
+                                                : NeedlessStopCause::kEnvelope;
+}
+
 }  // namespace
+
+NeedlessStopCauses& NeedlessStopCauses::operator+=(const NeedlessStopCauses& other) {
+  traced += other.traced;
+  in_cell += other.in_cell;
+  visual_hull += other.visual_hull;
+  envelope += other.envelope;
+  return *this;
+}
 
 StratumCounts& StratumCounts::operator+=(const StratumCounts& other) {
   configs += other.configs;
@@ -85,6 +133,7 @@ SceneCheck& SceneCheck::operator+=(const SceneCheck& other) {
   false_positives += other.false_positives;
   clear += other.clear;
   clear_forbidden += other.clear_forbidden;
+  causes += other.causes;
   bodies += other.bodies;
   bodies_visible_enough += other.bodies_visible_enough;
   for (const auto& [name, counts] : other.strata) strata[name] += counts;
@@ -152,6 +201,23 @@ SceneCheck check_scene(const CellModel& cell, const CspaceGrid& grid, SimulatedC
       if (truth.min_distance_m(robot) >= kClearDistance_m) {
         counts.clear = 1;
         counts.clear_forbidden = is_forbidden ? 1 : 0;
+        if (is_forbidden && under_test.obstacles != nullptr &&
+            check.causes.traced < under_test.decompose) {
+          ++check.causes.traced;
+          // Its own generator, so that tracing leaves the configurations drawn after it alone.
+          std::mt19937_64 trace_rng((static_cast<std::uint64_t>(under_test.index) << 20) ^ k);
+          switch (cause_of_needless_stop(cell, grid, sim, truth, under_test, q, trace_rng)) {
+            case NeedlessStopCause::kInCell:
+              ++check.causes.in_cell;
+              break;
+            case NeedlessStopCause::kVisualHull:
+              ++check.causes.visual_hull;
+              break;
+            case NeedlessStopCause::kEnvelope:
+              ++check.causes.envelope;
+              break;
+          }
+        }
       }
     } else {
       counts.colliding = 1;

@@ -20,9 +20,24 @@ struct ValidateOptions {
   int objects = 1;                   // boxes, at most, per uniform scene
   std::string removal = "occlusion-aware";
   std::string negative_control = "none";
-  std::string shard = "1/1";  // K/N: the K-th of N parts of the scenes
-  unsigned threads = 0;       // 0: one per core
-  std::string lut_cache;      // empty: the default cache folder
+  // The tables and fusion under test (ablations); unset: the cell's and the defaults.
+  double padding_m = 0.02;
+  double ball_radius_m = 0.06;
+  double m_max_m = 0.0;      // 0: the cell's
+  int camera_threshold = 0;  // 0: the cell's
+  // Model error applied to the simulated world (model_error.hpp); --model-error sets the
+  // documented tolerances, the single options override them.
+  bool documented_model_error = false;
+  double camera_rotation_error_deg = -1.0;  // < 0: unset
+  double camera_translation_error_m = -1.0;
+  double focal_error = -1.0;
+  double lens_k1 = 0.0;
+  bool lens_k1_set = false;
+  double robot_growth_m = -1.0;
+  std::size_t traced_per_scene = 2;  // needless stops traced to a cause per scene
+  std::string shard = "1/1";         // K/N: the K-th of N parts of the scenes
+  unsigned threads = 0;              // 0: one per core
+  std::string lut_cache;             // empty: the default cache folder
   bool json = false;
 };
 

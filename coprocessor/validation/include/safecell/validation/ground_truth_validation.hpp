@@ -6,6 +6,9 @@
 // turn (configuration_strata.hpp); each scene draws from its own generator, seeded with the run's
 // seed and s, so that a scene is the same whichever thread, shard or run takes it.
 //
+// With model error, the simulated world (cameras, robot) differs from the model the tables and
+// the pipeline use (model_error.hpp); the ground truth is the world's.
+//
 // Scenes run in parallel, one simulated cell and pipeline per thread. A run may be one shard of
 // many (`shard` K of N takes the K-th of N contiguous parts of the scenes); the reports of all
 // shards add up to the report of the whole run (operator+=), timings aside.
@@ -19,6 +22,7 @@
 #include "safecell/fusion/forbidden_map_fusion.hpp"
 #include "safecell/lut/lut_set.hpp"
 #include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/validation/model_error.hpp"
 #include "safecell/validation/negative_controls.hpp"
 #include "safecell/validation/scene_check.hpp"
 #include "safecell/validation/scene_strata.hpp"
@@ -40,6 +44,8 @@ struct ValidationOptions {
   unsigned threads = 0;  // 0: one per hardware thread
   Shard shard;
   NegativeControl negative_control = NegativeControl::kNone;
+  ModelError model_error;  // applied to the simulated world, not to the model
+  std::size_t needless_stops_traced_per_scene = 2;  // scene_check.hpp, "clear"
 };
 
 // The scenes [first, end) that shard `shard` of a run of `scenes` takes.

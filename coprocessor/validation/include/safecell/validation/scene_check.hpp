@@ -10,7 +10,15 @@
 //             the reason of the first such body (the reason most of the cameras that miss it
 //             give), and whether the cell is forbidden all the same.
 //   clear     its robot stays at least `clear_distance_m` from every body (static ones too);
-//             forbidden clear configurations are needless stops.
+//             forbidden clear configurations are needless stops. Up to `decompose` of them per
+//             scene are traced to a cause, the first that holds:
+//               in_cell      the cell also holds a colliding configuration (dense sampling: the
+//                            price of the cell's size);
+//               visual_hull  at configurations sampled inside the cell, the robot's exact
+//                            silhouettes still meet obstacle pixels in `camera_threshold` cameras
+//                            (phantoms, the visual hull, what stands in front of or behind a body);
+//               envelope     the rest: only the conservative envelope (LUT-1 with its padding and
+//                            sweeps) meets them.
 // Scene-level counts go to the scene's stratum and to the configuration's stratum both.
 // Shared by `safecell validate` and `safecell demo`.
 
@@ -49,6 +57,17 @@ struct StratumCounts {
   friend bool operator==(const StratumCounts&, const StratumCounts&) = default;
 };
 
+// Needless stops traced to a cause (see above), all additive.
+struct NeedlessStopCauses {
+  std::size_t traced = 0;
+  std::size_t in_cell = 0;
+  std::size_t visual_hull = 0;
+  std::size_t envelope = 0;
+
+  NeedlessStopCauses& operator+=(const NeedlessStopCauses& other);
+  friend bool operator==(const NeedlessStopCauses&, const NeedlessStopCauses&) = default;
+};
+
 struct SceneCheck {
   std::size_t configs_checked = 0;
   std::size_t colliding = 0;
@@ -60,6 +79,7 @@ struct SceneCheck {
   std::size_t false_positives = 0;  // free but forbidden
   std::size_t clear = 0;
   std::size_t clear_forbidden = 0;
+  NeedlessStopCauses causes;
   std::size_t bodies = 0;                 // humans and objects placed
   std::size_t bodies_visible_enough = 0;  // visible in at least camera_threshold cameras
   std::map<std::string, StratumCounts> strata;
@@ -80,6 +100,10 @@ struct SceneUnderTest {
   int camera_threshold = 2;
   std::string stratum;  // the scene's stratum, for the report
   std::size_t index = 0;
+  // Per camera, the obstacle pixels fusion back-projected (after robot removal; empty for an
+  // unknown view), and how many needless stops to trace to a cause: none without them.
+  const std::vector<FeatureMask>* obstacles = nullptr;
+  std::size_t decompose = 0;
 };
 
 inline constexpr double kClearDistance_m = 0.5;

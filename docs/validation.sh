@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Regenerates docs/validation.md: runs `safecell validate` on the default cell (the 10,000-scene
+# run, the negative controls, both robot removals, the model-error runs and the ablations), keeps
+# every JSON report in docs/validation/, and writes the tables from them. Takes about 15 minutes
+# on 2 cores. Needs a host build (cmake --preset host && cmake --build --preset host) and python3.
+#
+#   bash docs/validation.sh [SCENES]     SCENES of the main run (default 10000); the other runs
+#                                        take a tenth of it (at least 60)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+safecell="${SAFECELL:-build/host/coprocessor/cli/safecell}"
+scenes="${1:-10000}"
+small=$(( scenes / 10 < 60 ? 60 : scenes / 10 ))
+seed=11
+out=docs/validation
+mkdir -p "$out"
+[[ -x "$safecell" ]] || { echo "validation.sh: no $safecell; build the host preset first" >&2; exit 2; }
+
+run() {  # run NAME ARGS...: one JSON report; a missed collision does not stop the others
+  local name="$1"; shift
+  echo "validation.sh: $name: safecell validate $*" >&2
+  local status=0 start
+  start=$(date +%s)
+  "$safecell" validate --seed "$seed" --json "$@" >"$out/$name.json.tmp" || status=$?
+  [[ $status -le 1 ]] || { echo "validation.sh: $name failed ($status)" >&2; exit "$status"; }
+  mv "$out/$name.json.tmp" "$out/$name.json"
+  printf '%s\t%s\t%s\n' "$name" "safecell validate --seed $seed --json $*" \
+    "$(( $(date +%s) - start ))" >>"$out/commands.tsv"
+}
+
+: >"$out/commands.tsv"
+run main --scenes "$scenes"
+for control in empty-masks dropped-strip envelope-removal; do
+  run "control-$control" --scenes "$small" --negative-control "$control"
+done
+run removal-occlusion-aware --scenes "$small"
+run removal-plain --scenes "$small" --removal plain
+run model-error --scenes "$small" --model-error
+run model-error-cameras --scenes "$small" --camera-rotation-error 0.5 \
+  --camera-translation-error 0.01 --focal-error 0.01
+run model-error-lens --scenes "$small" --lens-k1 -0.02
+run model-error-robot --scenes "$small" --robot-growth 0.005
+run model-error-rotation-5deg --scenes "$small" --camera-rotation-error 5
+run ablation-padding-0 --scenes "$small" --padding 0
+run ablation-padding-0.05 --scenes "$small" --padding 0.05
+run ablation-ball-0.04 --scenes "$small" --ball-radius 0.04
+run ablation-ball-0.09 --scenes "$small" --ball-radius 0.09
+run ablation-m-max-0.12 --scenes "$small" --m-max 0.12
+run ablation-threshold-3 --scenes "$small" --camera-threshold 3
+
+python3 docs/validation_tables.py "$out" "$(date -u +%Y-%m-%d)" "$(git rev-parse --short HEAD)" \
+  >docs/validation.md.tmp
+mv docs/validation.md.tmp docs/validation.md
+echo "validation.sh: wrote docs/validation.md" >&2
