@@ -49,6 +49,9 @@ run ablation-ball-0.09 --scenes "$small" --ball-radius 0.09
 run ablation-m-max-0.12 --scenes "$small" --m-max 0.12
 run ablation-threshold-3 --scenes "$small" --camera-threshold 3
 
+echo "validation.sh: blind spots: safecell cell coverage --out $out/coverage" >&2
+"$safecell" cell coverage --out "$out/coverage" --json >/dev/null
+
 python3 docs/validation_tables.py "$out" "$(date -u +%Y-%m-%d)" "$(git rev-parse --short HEAD)" \
   >docs/validation.md.tmp
 mv docs/validation.md.tmp docs/validation.md

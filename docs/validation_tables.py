@@ -199,6 +199,21 @@ for name, label in [("removal-occlusion-aware", "default"),
 w(table(["setting", "missed", "unseen", "needless stops", "cell", "visual hull", "envelope",
          "forbidden", "fusion p99"], rows))
 w("")
+w("## Blind spots")
+w("")
+with open(os.path.join(folder, "coverage", "coverage.json")) as f:
+    coverage = json.load(f)
+w("`safecell cell coverage` places a person-sized body (a cylinder 0.3 m in radius, 0.4 m and "
+  "2.0 m tall) at every floor position (every " + f"{100 * coverage['step_m']:.0f}" + " cm) and "
+  "counts the cameras that see it, unhidden by static obstacles, at both heights. On the default "
+  f"cell {n(coverage['reach_blind_positions'])} of {n(coverage['reach_positions'])} positions "
+  f"within the robot's reach ({coverage['reach_m']:.2f} m) are seen by fewer than "
+  f"{coverage['camera_threshold']} cameras ({pct(coverage['reach_blind_share'])}). Where there "
+  "are blind spots, the tables forbid every cell whose envelope reaches into one (cell file "
+  "`blind_spots: forbid`, the default; `allow` warns on every load).")
+w("")
+w("![floor coverage of the default cell](validation/coverage/floor_coverage.png)")
+w("")
 w("## Certifying on a cluster")
 w("")
 w("A run splits into disjoint seeded shards (`--shard K/N` runs the K-th of N parts of the "

@@ -59,6 +59,17 @@ TEST(CellFile, TheDefaultCellIsTheShippedYaml) {
   EXPECT_NE(default_cell_yaml().find("RX130"), std::string_view::npos);
 }
 
+TEST(CellFile, BlindSpotsAreForbiddenUnlessTheCellAllowsThem) {
+  EXPECT_TRUE(parse_cell_yaml(kTwoJoints, "two.yaml").forbid_blind_spots);
+  EXPECT_TRUE(default_cell().forbid_blind_spots);
+  EXPECT_FALSE(parse_cell_yaml(std::string(kTwoJoints) + "blind_spots: allow\n", "two.yaml")
+                   .forbid_blind_spots);
+  EXPECT_TRUE(parse_cell_yaml(std::string(kTwoJoints) + "blind_spots: forbid\n", "two.yaml")
+                  .forbid_blind_spots);
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "blind_spots: ignore\n"),
+            "bad.yaml:11: blind_spots: value 'ignore', expected forbid or allow");
+}
+
 TEST(CellFile, MissingFieldIsNamed) {
   std::string text = kTwoJoints;
   text.replace(text.find("m_max_m: 0.2\n"), 13, "");

@@ -204,7 +204,7 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
   refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
-                            "feature_grid", "blocked_cells", "camera_threshold"});
+                            "feature_grid", "blocked_cells", "camera_threshold", "blind_spots"});
 
   CellConfig cell;
   cell.source = source;
@@ -264,6 +264,16 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     const Field threshold = require(top, "camera_threshold");
     cell.camera_threshold = integer_of(threshold);
     cell.camera_threshold_at = threshold.at;
+  }
+  if (root["blind_spots"]) {
+    const Field blind_spots = require(top, "blind_spots");
+    const std::string value = text_of(blind_spots);
+    if (value != "forbid" && value != "allow") {
+      throw_cell_error(blind_spots.at, "blind_spots",
+                       "value '" + value + "', expected forbid or allow");
+    }
+    cell.forbid_blind_spots = value == "forbid";
+    cell.blind_spots_at = blind_spots.at;
   }
   return cell;
 }

@@ -5,6 +5,7 @@
 
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cli/bench_command.hpp"
+#include "safecell/cli/cell_coverage_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
 #include "safecell/cli/demo_command.hpp"
 #include "safecell/cli/images_show_command.hpp"
@@ -64,6 +65,20 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "Cell file (YAML); without it the built-in default cell of the paper");
   info->add_flag("--json", cell_info.json, "Print one JSON object instead of a table");
   info->callback([&] { action = [&] { run_cell_info(cell_info, out); }; });
+  CellCoverageOptions coverage;
+  CLI::App* coverage_command = cell->add_subcommand(
+      "coverage",
+      "Where a person can stand that too few cameras see: a floor plan (PNG) of the cameras "
+      "seeing each position, and the blind share of the robot's reach");
+  coverage_command->add_option("--cell", coverage.cell_path,
+                               "Cell file (YAML); without it the built-in default cell");
+  coverage_command->add_option("--out", coverage.out_dir, "Folder for the picture and the JSON")
+      ->capture_default_str();
+  coverage_command->add_option("--step", coverage.step_m, "Floor grid spacing, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.02, 1.0));
+  coverage_command->add_flag("--json", coverage.json, "Print one JSON object instead of text");
+  coverage_command->callback([&] { action = [&] { run_cell_coverage(coverage, out, err); }; });
 
   CLI::App* sim = app.add_subcommand("sim", "The simulated work cell");
   sim->require_subcommand(1);
@@ -304,7 +319,8 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error, out, err);
+    // --help and --version end here too, with 0; every refused command line is bad input.
+    return app.exit(error, out, err) == 0 ? 0 : kExitBadInput;
   }
   try {
     action();

@@ -95,6 +95,13 @@ cv::Mat CameraRenderer::render(const std::vector<SurfaceMesh>& moving, std::uint
   return frame;
 }
 
+cv::Mat CameraRenderer::object_ids(const std::vector<SurfaceMesh>& moving) {
+  scenery_depth_.copyTo(rasteriser_.depth());
+  scenery_ids_.copyTo(rasteriser_.ids());
+  for (const auto& surface : moving) rasteriser_.draw(surface.mesh, surface.albedo, surface.body);
+  return lens_view(rasteriser_.ids(), cv::INTER_NEAREST).clone();
+}
+
 cv::Mat CameraRenderer::coverage(const std::vector<SurfaceMesh>& meshes) {
   rasteriser_.clear();
   for (const auto& surface : meshes) rasteriser_.draw(surface.mesh, 255);

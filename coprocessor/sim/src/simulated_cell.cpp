@@ -74,6 +74,11 @@ cv::Mat SimulatedCell::coverage(std::size_t camera_index,
   return renderers_.at(camera_index).coverage(surfaces);
 }
 
+cv::Mat SimulatedCell::object_ids(std::size_t camera_index,
+                                  const std::vector<SurfaceMesh>& surfaces) {
+  return renderers_.at(camera_index).object_ids(surfaces);
+}
+
 cv::Mat SimulatedCell::robot_coverage(std::size_t camera_index, const std::vector<double>& q) {
   return renderers_.at(camera_index).coverage({surface_of(robot_shapes(q), kRobotAlbedo)});
 }

@@ -104,6 +104,11 @@ struct CellConfig {
   // Unset: 2, or 1 with a single camera.
   std::optional<int> camera_threshold;
   SourceLine camera_threshold_at;
+  // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`
+  // (the default) makes every C-space cell whose envelope reaches into one a static obstacle
+  // cell; `allow` leaves them, with a warning whenever the tables are loaded.
+  bool forbid_blind_spots = true;
+  SourceLine blind_spots_at;
 };
 
 }  // namespace safecell

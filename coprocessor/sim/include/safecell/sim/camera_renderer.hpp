@@ -34,6 +34,10 @@ class CameraRenderer {
   cv::Mat render(const std::vector<SurfaceMesh>& moving, std::uint64_t frame_index, double time_s,
                  cv::Mat* object_ids = nullptr);
 
+  // The object-id image alone (as render() gives it) of the scenery with `moving` in it: no
+  // frame, no noise. For coverage maps, which need many.
+  cv::Mat object_ids(const std::vector<SurfaceMesh>& moving);
+
   // The pixels (CV_8UC1, 255 = covered) the meshes cover, whatever stands in front of them.
   cv::Mat coverage(const std::vector<SurfaceMesh>& meshes);
 

@@ -53,6 +53,9 @@ class SimulatedCell {
   // The robot, the humans and the objects as surfaces to render (robot first, then one or more
   // per human, then one per object), each with its body code.
   std::vector<SurfaceMesh> moving_surfaces(const SimScene& scene) const;
+  // One camera's object-id image of the still cell with `surfaces` in it (no robot unless among
+  // them): CameraRenderer::object_ids().
+  cv::Mat object_ids(std::size_t camera_index, const std::vector<SurfaceMesh>& surfaces);
   // Pixels of one camera the robot (as it appears) covers, occlusion ignored (CV_8UC1, 255 =
   // covered).
   cv::Mat robot_coverage(std::size_t camera_index, const std::vector<double>& q);
