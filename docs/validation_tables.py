@@ -76,7 +76,8 @@ w(table(["figure", "value"], [
     ["false positives (forbidden among all free configurations)",
      pct(main["false_positive_rate"])],
     ["forbidden share of the grid, mean per scene", pct(main["forbidden_share"])],
-    ["p99 per cycle: features / fusion", f"{main['features_ms_p99']:.2f} ms / "
+    ["p99 per cycle: features / fusion (two threads at work: `safecell bench` measures)",
+     f"{main['features_ms_p99']:.2f} ms / "
      f"{main['fusion_ms_p99']:.2f} ms"],
 ]))
 w("")

@@ -34,7 +34,7 @@ TEST(DemoCommand, RunsThePipelineAndWritesTheReport) {
   }
   EXPECT_TRUE(seen);
   for (const char* picture : {"views/cycle_0000.png", "views/cycle_0008.png",
-                              "slices/cycle_0004_joints_1_2.png", "observability_joints_1_2.png"}) {
+                              "slices/cycle_0004_joints_1_2.png", "floor_coverage.png"}) {
     EXPECT_TRUE(fs::exists(out / picture)) << picture;
   }
   EXPECT_NE(run.out.find("missed 0"), std::string::npos) << run.out;

@@ -58,18 +58,6 @@ cv::Mat forbidden_slice(const CspaceGrid& grid, const CellSet& forbidden,
   });
 }
 
-cv::Mat observability_slice(const CspaceGrid& grid, const std::vector<CellSet>& observable,
-                            CellIndex at_cell, std::uint32_t axis_x, std::uint32_t axis_y,
-                            const std::string& title) {
-  return slice(grid, at_cell, axis_x, axis_y, title, [&](CellIndex cell) {
-    std::size_t seen = 0;
-    for (const auto& camera : observable) seen += camera.test(cell) ? 1U : 0U;
-    const auto level =
-        static_cast<std::uint8_t>(255 * seen / std::max<std::size_t>(observable.size(), 1));
-    return cv::Vec3b(level, level, level);
-  });
-}
-
 cv::Mat camera_overlay(const cv::Mat& frame, const FeatureMask& blocked, const FeatureMask& robot,
                        const FeatureMask& obstacles, const std::string& label) {
   cv::Mat image;

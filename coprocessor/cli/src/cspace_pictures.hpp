@@ -19,11 +19,6 @@ cv::Mat forbidden_slice(const CspaceGrid& grid, const CellSet& forbidden,
                         const CellSet& static_cells, CellIndex robot_cell, std::uint32_t axis_x,
                         std::uint32_t axis_y, const std::string& title);
 
-// As forbidden_slice, shading each cell by how many cameras can see it (black: none, white: all).
-cv::Mat observability_slice(const CspaceGrid& grid, const std::vector<CellSet>& observable,
-                            CellIndex at_cell, std::uint32_t axis_x, std::uint32_t axis_y,
-                            const std::string& title);
-
 // A camera frame (CV_8UC1) with its feature cells tinted: the robot's silhouette blue, the
 // obstacles after robot removal red, blocked cells that were removed as the robot yellow. CV_8UC3.
 cv::Mat camera_overlay(const cv::Mat& frame, const FeatureMask& blocked, const FeatureMask& robot,
