@@ -1,40 +1,15 @@
-// The renderer's object-id image: which body is front-most at each pixel, checked against the
-// geometry of hand-built scenes.
+// The renderer's object-id image: which body a simulated scene shows front-most at each pixel,
+// checked against the geometry (the rasteriser's id buffer: rasteriser_test.cpp).
 
 #include <gtest/gtest.h>
 
 #include "safecell/camera/default_cameras.hpp"
 #include "safecell/robot/default_robot.hpp"
 #include "safecell/sim/body_id.hpp"
-#include "safecell/sim/rasteriser.hpp"
 #include "safecell/sim/simulated_cell.hpp"
 
 namespace safecell {
 namespace {
-
-// A camera at the origin looking along the cell's +x axis, 101 x 101 pixels, 50 px focal length.
-CameraIntrinsics small_intrinsics() {
-  CameraIntrinsics k;
-  k.fx_px = k.fy_px = 50.0;
-  k.cx_px = k.cy_px = 50.0;
-  k.width_px = k.height_px = 101;
-  return k;
-}
-
-Eigen::Isometry3d looking_along_x() {
-  Eigen::Matrix3d camera_axes;
-  camera_axes << 0, -1, 0, 0, 0, -1, 1, 0, 0;
-  Eigen::Isometry3d cell_to_camera = Eigen::Isometry3d::Identity();
-  cell_to_camera.linear() = camera_axes;
-  return cell_to_camera;
-}
-
-TriangleMesh facing_square(double x, double half) {
-  TriangleMesh mesh;
-  mesh.vertices = {{x, -half, -half}, {x, half, -half}, {x, half, half}, {x, -half, half}};
-  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  return mesh;
-}
 
 TEST(BodyCode, KindAndIndexRoundTrip) {
   for (const BodyKind kind : {BodyKind::kBackground, BodyKind::kRobot, BodyKind::kStaticObstacle,
@@ -48,24 +23,6 @@ TEST(BodyCode, KindAndIndexRoundTrip) {
   EXPECT_THROW((void)body_code(BodyKind::kHuman, kMaxBodiesPerKind), std::out_of_range);
   EXPECT_EQ(body_name(body_code(BodyKind::kHuman, 1)), "human 2");
   EXPECT_EQ(body_name(body_code(BodyKind::kObject, 0)), "object 1");
-}
-
-TEST(ObjectIds, TheNearerSurfaceOwnsThePixelInEitherDrawingOrder) {
-  const BodyCode near = body_code(BodyKind::kHuman, 0);
-  const BodyCode far = body_code(BodyKind::kStaticObstacle, 3);
-  for (const bool near_first : {false, true}) {
-    Rasteriser rasteriser(small_intrinsics(), looking_along_x());
-    if (near_first) rasteriser.draw(facing_square(2.0, 0.5), 200, near);
-    rasteriser.draw(facing_square(4.0, 4.5), 100, far);
-    if (!near_first) rasteriser.draw(facing_square(2.0, 0.5), 200, near);
-    // The near square covers pixel centres 38..62 (half size 0.5 m at 2 m: +-12.5 px).
-    EXPECT_EQ(rasteriser.ids().at<BodyCode>(50, 50), near);
-    EXPECT_EQ(rasteriser.ids().at<BodyCode>(38, 62), near);
-    EXPECT_EQ(rasteriser.ids().at<BodyCode>(37, 50), far);
-    EXPECT_EQ(rasteriser.ids().at<BodyCode>(50, 5), far);
-    rasteriser.clear();
-    EXPECT_EQ(cv::countNonZero(rasteriser.ids()), 0) << "cleared to background";
-  }
 }
 
 TEST(ObjectIds, ASimulatedSceneShowsEachBodyWhereItsGeometryIs) {

@@ -74,5 +74,23 @@ TEST(Rasteriser, TrianglesReachingBehindTheCameraAreClipped) {
   EXPECT_NEAR(rasteriser.depth().at<float>(100, 50), 1.0f, 1e-4f);
 }
 
+TEST(Rasteriser, TheNearerSurfaceOwnsThePixelInTheObjectIdBuffer) {
+  const BodyCode near = body_code(BodyKind::kHuman, 0);
+  const BodyCode far = body_code(BodyKind::kStaticObstacle, 3);
+  for (const bool near_first : {false, true}) {
+    Rasteriser rasteriser(small_intrinsics(), looking_along_x());
+    if (near_first) rasteriser.draw(facing_square(2.0, 0.5), 200, near);
+    rasteriser.draw(facing_square(4.0, 4.5), 100, far);
+    if (!near_first) rasteriser.draw(facing_square(2.0, 0.5), 200, near);
+    // The near square covers pixel centres 38..62 (half size 0.5 m at 2 m: +-12.5 px).
+    EXPECT_EQ(rasteriser.ids().at<BodyCode>(50, 50), near);
+    EXPECT_EQ(rasteriser.ids().at<BodyCode>(38, 62), near);
+    EXPECT_EQ(rasteriser.ids().at<BodyCode>(37, 50), far);
+    EXPECT_EQ(rasteriser.ids().at<BodyCode>(50, 5), far);
+    rasteriser.clear();
+    EXPECT_EQ(cv::countNonZero(rasteriser.ids()), 0) << "cleared to background";
+  }
+}
+
 }  // namespace
 }  // namespace safecell

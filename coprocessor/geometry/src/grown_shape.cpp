@@ -34,13 +34,11 @@ PlacedShape grown_by(const PlacedShape& shape, double margin_m) {
         using T = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<T, Box>) {
           s.size_m.array() += 2.0 * margin_m;
-        } else if constexpr (std::is_same_v<T, Sphere>) {
-          s.radius_m += margin_m;
+        } else if constexpr (std::is_same_v<T, Sphere> || std::is_same_v<T, Capsule>) {
+          s.radius_m += margin_m;  // a capsule's caps grow with its radius
         } else if constexpr (std::is_same_v<T, Cylinder>) {
           s.radius_m += margin_m;
           s.length_m += 2.0 * margin_m;
-        } else if constexpr (std::is_same_v<T, Capsule>) {
-          s.radius_m += margin_m;
         } else {
           if (s) s = grown_mesh(*s, margin_m);
         }

@@ -81,19 +81,18 @@ FloorCoverage floor_coverage(const CellModel& cell, const CspaceGrid& grid,
   coverage.columns = static_cast<int>(std::floor(2.0 * half_x / options.step_m)) + 1;
   coverage.rows = static_cast<int>(std::floor(2.0 * half_y / options.step_m)) + 1;
   coverage.first_m = Eigen::Vector2d(-half_x, -half_y);
-  coverage.cameras_seeing.assign(static_cast<std::size_t>(coverage.columns * coverage.rows), 0);
+  const std::size_t positions = coverage.index(0, coverage.rows);
+  coverage.cameras_seeing.assign(positions, 0);
 
   // The still cell as the cameras see it; no robot, no noise needed for object ids.
   SimulatedCell sim = simulate_cell(cell, SensorSettings{});
   const std::optional<GroundTruth> statics =
       cell.obstacles.empty() ? std::nullopt : std::optional<GroundTruth>(cell.obstacles);
   const BodyCode body = body_code(BodyKind::kHuman, 0);
-  const auto positions = static_cast<std::size_t>(coverage.columns * coverage.rows);
   for (int row = 0; row < coverage.rows; ++row) {
     for (int column = 0; column < coverage.columns; ++column) {
       const Eigen::Vector2d at = coverage.position_m(column, row);
-      int& seeing =
-          coverage.cameras_seeing[static_cast<std::size_t>(row * coverage.columns + column)];
+      int& seeing = coverage.cameras_seeing[coverage.index(column, row)];
       const double tallest =
           *std::max_element(options.body_heights_m.begin(), options.body_heights_m.end());
       if (statics && statics->collides({standing_cylinder(at, options.body_radius_m, tallest)})) {
@@ -112,8 +111,7 @@ FloorCoverage floor_coverage(const CellModel& cell, const CspaceGrid& grid,
           seeing += every_height ? 1 : 0;
         }
       }
-      if (progress)
-        progress(static_cast<std::size_t>(row * coverage.columns + column + 1), positions);
+      if (progress) progress(coverage.index(column, row) + 1, positions);
     }
   }
   return coverage;

@@ -43,9 +43,12 @@ struct FloorCoverage {
   [[nodiscard]] Eigen::Vector2d position_m(int column, int row) const {
     return first_m + step_m * Eigen::Vector2d(column, row);
   }
-  [[nodiscard]] int at(int column, int row) const {
-    return cameras_seeing[static_cast<std::size_t>(row * columns + column)];
+  // The index of a position in cameras_seeing.
+  [[nodiscard]] std::size_t index(int column, int row) const {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+           static_cast<std::size_t>(column);
   }
+  [[nodiscard]] int at(int column, int row) const { return cameras_seeing[index(column, row)]; }
   // A position where a person can stand and fewer than camera_threshold cameras see them.
   [[nodiscard]] bool blind(int column, int row) const {
     const int seeing = at(column, row);
