@@ -25,8 +25,9 @@ CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelL
     CoverageOptions coverage_options;
     coverage_options.step_m = kBlindSpotStep_m;
     const FloorCoverage coverage = floor_coverage(cell, grid, coverage_options);
-    if (!blind_spot_volumes(coverage).empty()) {
-      with_blind_spots = with_blind_spots_forbidden(cell, coverage);
+    CellModel forbidding = with_blind_spots_forbidden(cell, coverage);
+    if (forbidding.obstacles.size() > cell.obstacles.size()) {
+      with_blind_spots = std::move(forbidding);
       err << "blind spots: " << coverage.reach_blind_positions()
           << " floor positions within the robot's reach are seen by fewer than "
           << coverage.camera_threshold << " cameras; the cells reaching there are forbidden\n";

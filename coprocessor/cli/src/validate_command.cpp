@@ -79,13 +79,10 @@ void print_report(const ValidationRun& run, const ValidationReport& report, std:
       << percent(report.false_positive_rate()) << " of free ones; forbidden "
       << percent(report.forbidden_share()) << " of the grid on average\n";
   if (report.causes.traced > 0) {
-    const auto share = [&report](std::size_t part) {
-      return percent(static_cast<double>(part) / static_cast<double>(report.causes.traced));
-    };
     out << "  needless stops traced: " << grouped(report.causes.traced) << ", the cell holds a "
-        << "collision " << share(report.causes.in_cell) << ", visual hull / phantoms "
-        << share(report.causes.visual_hull) << ", envelope width " << share(report.causes.envelope)
-        << "\n";
+        << "collision " << percent(report.causes.share(report.causes.in_cell))
+        << ", visual hull / phantoms " << percent(report.causes.share(report.causes.visual_hull))
+        << ", envelope width " << percent(report.causes.share(report.causes.envelope)) << "\n";
   }
   if (run.model_error.any()) {
     out << "  model error in the simulated world: cameras turned "
@@ -105,9 +102,7 @@ void print_report(const ValidationRun& run, const ValidationReport& report, std:
   for (const auto& [name, counts] : report.strata) {
     table.add_row({name, grouped(counts.configs), grouped(counts.colliding),
                    std::to_string(counts.missed), grouped(counts.unseen),
-                   percent(counts.clear == 0 ? 0.0
-                                             : static_cast<double>(counts.clear_forbidden) /
-                                                   static_cast<double>(counts.clear))});
+                   percent(counts.needless_stop_share())});
   }
   table.print(out);
   out << "  p99 per cycle: features " << fixed(report.features_ms_p99, 2) << " ms, fusion "

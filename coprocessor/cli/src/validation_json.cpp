@@ -14,9 +14,7 @@ Json stratum_json(const StratumCounts& counts) {
           {"unseen", counts.unseen},
           {"clear", counts.clear},
           {"clear_forbidden", counts.clear_forbidden},
-          {"needless_stop_share", counts.clear == 0 ? 0.0
-                                                    : static_cast<double>(counts.clear_forbidden) /
-                                                          static_cast<double>(counts.clear)}};
+          {"needless_stop_share", counts.needless_stop_share()}};
 }
 
 // The value at `key`, checked: a missing key or one of another type is refused by name.
@@ -81,18 +79,14 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["clear"] = report.clear;
   json["clear_forbidden"] = report.clear_forbidden;
   json["needless_stop_share"] = report.needless_stop_share();
-  const auto share_of = [&report](std::size_t part) {
-    return report.causes.traced == 0
-               ? 0.0
-               : static_cast<double>(part) / static_cast<double>(report.causes.traced);
-  };
-  json["needless_stop_causes"] = {{"traced", report.causes.traced},
-                                  {"in_cell", report.causes.in_cell},
-                                  {"visual_hull", report.causes.visual_hull},
-                                  {"envelope", report.causes.envelope},
-                                  {"in_cell_share", share_of(report.causes.in_cell)},
-                                  {"visual_hull_share", share_of(report.causes.visual_hull)},
-                                  {"envelope_share", share_of(report.causes.envelope)}};
+  json["needless_stop_causes"] = {
+      {"traced", report.causes.traced},
+      {"in_cell", report.causes.in_cell},
+      {"visual_hull", report.causes.visual_hull},
+      {"envelope", report.causes.envelope},
+      {"in_cell_share", report.causes.share(report.causes.in_cell)},
+      {"visual_hull_share", report.causes.share(report.causes.visual_hull)},
+      {"envelope_share", report.causes.share(report.causes.envelope)}};
   json["bodies"] = report.bodies;
   json["bodies_visible_enough"] = report.bodies_visible_enough;
   json["objects"] = report.objects;

@@ -89,12 +89,12 @@ FloorCoverage floor_coverage(const CellModel& cell, const CspaceGrid& grid,
   const std::optional<GroundTruth> statics =
       cell.obstacles.empty() ? std::nullopt : std::optional<GroundTruth>(cell.obstacles);
   const BodyCode body = body_code(BodyKind::kHuman, 0);
+  const double tallest =
+      *std::max_element(options.body_heights_m.begin(), options.body_heights_m.end());
   for (int row = 0; row < coverage.rows; ++row) {
     for (int column = 0; column < coverage.columns; ++column) {
       const Eigen::Vector2d at = coverage.position_m(column, row);
       int& seeing = coverage.cameras_seeing[coverage.index(column, row)];
-      const double tallest =
-          *std::max_element(options.body_heights_m.begin(), options.body_heights_m.end());
       if (statics && statics->collides({standing_cylinder(at, options.body_radius_m, tallest)})) {
         seeing = -1;
       } else {

@@ -145,6 +145,8 @@ SceneCheck& SceneCheck::operator+=(const SceneCheck& other) {
 
 double SceneCheck::false_positive_rate() const { return share(false_positives, free); }
 double SceneCheck::needless_stop_share() const { return share(clear_forbidden, clear); }
+double StratumCounts::needless_stop_share() const { return share(clear_forbidden, clear); }
+double NeedlessStopCauses::share(std::size_t part) const { return safecell::share(part, traced); }
 
 std::vector<PlacedShape> moving_bodies(const SimScene& scene) {
   std::vector<PlacedShape> bodies = scene.objects;

@@ -55,6 +55,8 @@ struct StratumCounts {
 
   StratumCounts& operator+=(const StratumCounts& other);
   friend bool operator==(const StratumCounts&, const StratumCounts&) = default;
+  // Forbidden among the clear configurations.
+  [[nodiscard]] double needless_stop_share() const;
 };
 
 // Needless stops traced to a cause (see above), all additive.
@@ -65,6 +67,8 @@ struct NeedlessStopCauses {
   std::size_t envelope = 0;
 
   NeedlessStopCauses& operator+=(const NeedlessStopCauses& other);
+  // `part` (one of the causes) as a share of the traced needless stops.
+  [[nodiscard]] double share(std::size_t part) const;
   friend bool operator==(const NeedlessStopCauses&, const NeedlessStopCauses&) = default;
 };
 
