@@ -16,6 +16,7 @@ namespace {
 
 constexpr double kWallClearance_m = 0.3;
 constexpr int kAttempts = 200;
+constexpr int kConfigurationDraws = 8;   // robot configurations a stratum is tried at
 constexpr double kAgainstStep_m = 0.02;  // how finely a person moves out until the arm is clear
 constexpr int kAgainstSteps = 75;        // up to 1.5 m out
 
@@ -218,6 +219,25 @@ bool place_boxes(Placer& placer, const CellModel& cell, const SceneLimits& limit
   return !placer.scene().objects.empty();
 }
 
+bool place_stratum(SceneStratum stratum, Placer& placer, const CellModel& cell,
+                   const SceneLimits& limits, std::mt19937_64& rng) {
+  switch (stratum) {
+    case SceneStratum::kUniform:
+      return false;
+    case SceneStratum::kAgainstArm:
+      return place_against_arm(placer, cell, rng);
+    case SceneStratum::kBehindArm:
+      return place_behind_arm(placer, cell, rng);
+    case SceneStratum::kReaching:
+      return place_reaching(placer, cell, rng);
+    case SceneStratum::kBehindStaticObstacle:
+      return place_behind_static_obstacle(placer, cell, rng);
+    case SceneStratum::kBoxes:
+      return place_boxes(placer, cell, limits, rng);
+  }
+  return false;
+}
+
 }  // namespace
 
 const char* to_string(SceneStratum stratum) {
@@ -242,35 +262,20 @@ StratifiedScene make_scene(SceneStratum stratum, const CellModel& cell, const Cs
                            const SceneLimits& limits, std::mt19937_64& rng) {
   if (!cell.robot) throw std::invalid_argument("validation scenes need a cell with a robot model");
   StratifiedScene placed;
-  placed.scene.q = random_configuration(grid, rng);
   placed.stratum = stratum;
+  // The arm at one configuration can fill the only room a stratum has (behind the workbench, as
+  // the one camera that can see it there looks): then the stratum is tried at another.
+  for (int draw = 0; draw < kConfigurationDraws && stratum != SceneStratum::kUniform; ++draw) {
+    placed.scene = SimScene{};
+    placed.scene.q = random_configuration(grid, rng);
+    Placer placer(cell, placed.scene);
+    if (place_stratum(stratum, placer, cell, limits, rng)) return placed;
+  }
+  placed.scene = SimScene{};
+  placed.scene.q = random_configuration(grid, rng);
+  placed.stratum = SceneStratum::kUniform;
   Placer placer(cell, placed.scene);
-  bool done = false;
-  switch (stratum) {
-    case SceneStratum::kUniform:
-      break;
-    case SceneStratum::kAgainstArm:
-      done = place_against_arm(placer, cell, rng);
-      break;
-    case SceneStratum::kBehindArm:
-      done = place_behind_arm(placer, cell, rng);
-      break;
-    case SceneStratum::kReaching:
-      done = place_reaching(placer, cell, rng);
-      break;
-    case SceneStratum::kBehindStaticObstacle:
-      done = place_behind_static_obstacle(placer, cell, rng);
-      break;
-    case SceneStratum::kBoxes:
-      done = place_boxes(placer, cell, limits, rng);
-      break;
-  }
-  if (!done) {
-    placed.scene.humans.clear();
-    placed.scene.objects.clear();
-    placed.stratum = SceneStratum::kUniform;
-    place_uniform(placer, limits, rng);
-  }
+  place_uniform(placer, limits, rng);
   return placed;
 }
 

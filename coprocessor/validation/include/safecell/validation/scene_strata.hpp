@@ -8,8 +8,9 @@
 //   behind_static_obstacle  a person behind a static obstacle as one camera sees it;
 //   boxes                   boxes on the floor and on top of the static obstacles (a workbench).
 // Every body stands where there is room (not in the robot at the scene's configuration, a static
-// obstacle, another body or a wall). A stratum that cannot be placed in a cell (no static
-// obstacle, no room) falls back to uniform and says so in the returned scene's stratum.
+// obstacle, another body or a wall). A stratum without room at the scene's robot configuration is
+// tried at up to 8 others; one that cannot be placed at all (no static obstacle, no room) falls
+// back to uniform and says so in the returned scene's stratum.
 
 #include <array>
 #include <cstddef>
