@@ -1,11 +1,13 @@
 #pragma once
 // A set of C-space cells as a bitset in cell index order (joint 0 fastest): the per-camera
 // suspicious sets, the critical and forbidden maps. A row of cells along joint 0 is a run of
-// consecutive bits, so a box of cells is set with a few word operations per row.
+// consecutive bits, so a box of cells is set with a few word operations per row. The storage is
+// owned here; the word algorithms are shared/cspace/cell_bits.hpp, the same the controller uses.
 
 #include <cstdint>
 #include <vector>
 
+#include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 
 namespace safecell {
@@ -17,11 +19,9 @@ class CellSet {
 
   [[nodiscard]] std::uint32_t cell_count() const { return cell_count_; }
 
-  [[nodiscard]] bool test(CellIndex cell) const {
-    return ((words_[cell >> 6] >> (cell & 63)) & 1U) != 0;
-  }
-  void set(CellIndex cell) { words_[cell >> 6] |= std::uint64_t{1} << (cell & 63); }
-  void reset(CellIndex cell) { words_[cell >> 6] &= ~(std::uint64_t{1} << (cell & 63)); }
+  [[nodiscard]] bool test(CellIndex cell) const { return cell_bits::test(words_.data(), cell); }
+  void set(CellIndex cell) { cell_bits::set(words_.data(), cell); }
+  void reset(CellIndex cell) { cell_bits::clear(words_.data(), cell); }
   // Sets cells begin..end-1 (precondition: begin <= end <= cell_count()).
   void set_range(CellIndex begin, CellIndex end);
   // Whether every cell begin..end-1 is set.

@@ -1,0 +1,55 @@
+#pragma once
+// The hash of a forbidden map, defined per block of cells so that applying a chunk recomputes only
+// the blocks it touched.
+//
+//   block b       cells [4096 b, 4096 (b + 1)), i.e. words [64 b, 64 b + 64) of the map
+//   block hash    h = mix(b + 1); for each word w of the block (zero past the map's last word):
+//                 h = mix(h ^ w)
+//   map hash      h = mix(cell_count); for each block hash k, in order: h = mix(h ^ k)
+//   mix           the 64-bit finaliser of MurmurHash3 (two multiply-xorshift rounds)
+// Computed over 64-bit word values, so it is equal on every platform whatever its byte order. It
+// checks that a receiver rebuilt the sender's map (every chunk applied, none twice, none torn); the
+// link's CRC is what guards the bytes. Test vectors are in test/cspace/map_hash_test.cpp.
+// Real-time safe: no allocation; caller storage only.
+
+#include <cstdint>
+
+#include "safecell/cspace/cspace_grid.hpp"
+
+namespace safecell {
+
+inline constexpr std::uint32_t kMapHashBlockCells = 4096;
+inline constexpr std::uint32_t kMapHashBlockWords = kMapHashBlockCells / 64;
+
+constexpr std::uint32_t map_hash_blocks(std::uint32_t cell_count) noexcept {
+  return static_cast<std::uint32_t>((std::uint64_t{cell_count} + kMapHashBlockCells - 1) /
+                                    kMapHashBlockCells);
+}
+
+// The hash of block `block` of a map of cell_count cells (precondition: block < blocks).
+std::uint64_t map_block_hash(const std::uint64_t* words, CellIndex cell_count,
+                             std::uint32_t block) noexcept;
+
+// The map hash from the block hashes (map_hash_blocks(cell_count) of them).
+std::uint64_t map_hash_of_blocks(const std::uint64_t* block_hashes, CellIndex cell_count) noexcept;
+
+// The map hash from scratch: every block.
+std::uint64_t map_hash(const std::uint64_t* words, CellIndex cell_count) noexcept;
+
+// Block hashes kept up to date over caller storage (map_hash_blocks(cell_count) entries): after a
+// change of cells [begin, end), `refresh` recomputes the blocks they lie in.
+class MapBlockHashes {
+ public:
+  MapBlockHashes(std::uint64_t* block_hashes, CellIndex cell_count) noexcept
+      : hashes_(block_hashes), cell_count_(cell_count) {}
+
+  void refresh_all(const std::uint64_t* words) noexcept;
+  void refresh(const std::uint64_t* words, CellIndex begin, CellIndex end) noexcept;
+  std::uint64_t map_hash() const noexcept { return map_hash_of_blocks(hashes_, cell_count_); }
+
+ private:
+  std::uint64_t* hashes_;
+  CellIndex cell_count_;
+};
+
+}  // namespace safecell

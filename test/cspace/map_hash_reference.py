@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""An independent transcription of the map hash defined in shared/cspace/.../map_hash.hpp.
+
+It prints the test vectors that test/cspace/map_hash_test.cpp pins, so that the C++ code is
+checked against the written definition rather than against its own output.
+Run: python3 test/cspace/map_hash_reference.py
+"""
+
+MASK = (1 << 64) - 1
+BLOCK_CELLS = 4096
+
+
+def mix(x):
+    x ^= x >> 33
+    x = (x * 0xFF51AFD7ED558CCD) & MASK
+    x ^= x >> 33
+    x = (x * 0xC4CEB9FE1A85EC53) & MASK
+    x ^= x >> 33
+    return x
+
+
+def map_hash(cells, cell_count):
+    """cells: the set of forbidden cell indices."""
+    blocks = (cell_count + BLOCK_CELLS - 1) // BLOCK_CELLS
+    h = mix(cell_count)
+    for b in range(blocks):
+        k = mix(b + 1)
+        for w in range(64):
+            word = 0
+            for bit in range(64):
+                if b * BLOCK_CELLS + w * 64 + bit in cells:
+                    word |= 1 << bit
+            k = mix(k ^ word)
+        h = mix(h ^ k)
+    return h
+
+
+VECTORS = [
+    ("one free cell", set(), 1),
+    ("100 cells: 0, 5..9, 99", {0, 5, 6, 7, 8, 9, 99}, 100),
+    ("10000 cells: 4090..4199, 9999", set(range(4090, 4200)) | {9999}, 10000),
+    ("4096 cells, all forbidden", set(range(4096)), 4096),
+]
+
+if __name__ == "__main__":
+    for name, cells, count in VECTORS:
+        print(f"{name}: 0x{map_hash(cells, count):016X}")

@@ -1,0 +1,70 @@
+// The map hash: test vectors from an independent transcription of its definition
+// (test/cspace/map_hash_reference.py), and the block-wise update equal to a full recomputation.
+
+#include "safecell/cspace/map_hash.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "safecell/cspace/cell_bits.hpp"
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+using Words = std::vector<std::uint64_t>;
+
+TEST(MapHash, TestVectors) {
+  Words one(1, 0);
+  EXPECT_EQ(map_hash(one.data(), 1), 0x2A106291D317D81Bull);
+
+  Words hundred(cell_bits::words_for(100), 0);
+  cell_bits::set(hundred.data(), 0);
+  cell_bits::set_range(hundred.data(), 5, 10);
+  cell_bits::set(hundred.data(), 99);
+  EXPECT_EQ(map_hash(hundred.data(), 100), 0xEF0E2F9EF4C41E07ull);
+
+  Words three_blocks(cell_bits::words_for(10000), 0);
+  cell_bits::set_range(three_blocks.data(), 4090, 4200);
+  cell_bits::set(three_blocks.data(), 9999);
+  EXPECT_EQ(map_hash(three_blocks.data(), 10000), 0x6901E75F9BC7A0F7ull);
+
+  Words full(cell_bits::words_for(4096), 0);
+  cell_bits::set_range(full.data(), 0, 4096);
+  EXPECT_EQ(map_hash(full.data(), 4096), 0x21225BCB46D0D59Bull);
+}
+
+TEST(MapHash, OneCellOrTheCellCountChangesIt) {
+  Words map(cell_bits::words_for(9000), 0);
+  const std::uint64_t empty = map_hash(map.data(), 9000);
+  EXPECT_NE(map_hash(map.data(), 8999), empty);
+  for (CellIndex cell : {0u, 63u, 64u, 4095u, 4096u, 8999u}) {
+    cell_bits::set(map.data(), cell);
+    EXPECT_NE(map_hash(map.data(), 9000), empty) << "cell " << cell;
+    cell_bits::clear(map.data(), cell);
+  }
+}
+
+TEST(MapHash, RefreshingTheTouchedBlocksEqualsAFullRecomputation) {
+  test::PropertyRun run(100);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto cells = static_cast<CellIndex>(1 + run.rng()() % 40000);
+    Words map(cell_bits::words_for(cells), 0);
+    std::vector<std::uint64_t> blocks(map_hash_blocks(cells));
+    MapBlockHashes hashes(blocks.data(), cells);
+    hashes.refresh_all(map.data());
+    for (int change = 0; change < 10; ++change) {
+      const auto begin = static_cast<CellIndex>(run.rng()() % cells);
+      const auto end =
+          static_cast<CellIndex>(begin + 1 + run.rng()() % std::min(cells - begin, 9000u));
+      cell_bits::set_range(map.data(), begin, end);
+      hashes.refresh(map.data(), begin, end);
+      ASSERT_EQ(hashes.map_hash(), map_hash(map.data(), cells))
+          << "cells " << cells << ", set [" << begin << ", " << end << "), iteration " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace safecell
