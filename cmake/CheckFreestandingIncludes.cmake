@@ -1,6 +1,7 @@
 # cmake -DSOURCE_DIR=<repo> -P CheckFreestandingIncludes.cmake
 #
-# Fails when code in shared/ or controller/ (outside controller/host/) includes anything but the
+# Fails when code in shared/, the controller's side of protocol/ (safety_layer/, nanopb/) or
+# controller/ (outside controller/host/) includes anything but the
 # freestanding C++ headers below, safecell's own headers, or nanopb's; or allocates from the heap.
 # DESIGN.md §2 names the banned headers; this is the stricter allow-list form of that rule.
 cmake_minimum_required(VERSION 3.25)
@@ -11,6 +12,8 @@ set(allowed_system_headers
 
 file(GLOB_RECURSE sources
   ${SOURCE_DIR}/shared/*.hpp ${SOURCE_DIR}/shared/*.cpp ${SOURCE_DIR}/shared/*.h
+  ${SOURCE_DIR}/protocol/safety_layer/*.hpp ${SOURCE_DIR}/protocol/safety_layer/*.cpp
+  ${SOURCE_DIR}/protocol/nanopb/*.hpp ${SOURCE_DIR}/protocol/nanopb/*.cpp
   ${SOURCE_DIR}/controller/*.hpp ${SOURCE_DIR}/controller/*.cpp ${SOURCE_DIR}/controller/*.h)
 list(FILTER sources EXCLUDE REGEX "/controller/host/")
 

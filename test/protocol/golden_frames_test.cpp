@@ -1,0 +1,198 @@
+// Golden frames of safecell.v1, checked in under test/protocol/golden/v1/: every later build must
+// still open and decode them to the same messages (backwards compatibility). They were written once
+// by the disabled test below:
+//   build/host/test/protocol/test_protocol_interop --gtest_also_run_disabled_tests
+//     --gtest_filter='GoldenFrames.DISABLED_Write'
+// Never rewrite them for a change of the protocol; a change that breaks them is a new version.
+
+#include <google/protobuf/util/message_differencer.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "safecell/protocol/frame.hpp"
+#include "safecell/protocol/nanopb_codec.hpp"
+#include "safecell/v1/message.pb.h"
+
+namespace safecell {
+namespace {
+
+namespace pb = ::safecell::v1;
+
+constexpr std::uint64_t kGoldenFingerprint = 0x0123456789ABCDEFull;
+
+struct Golden {
+  const char* name;
+  pb::Message message;
+};
+
+std::vector<Golden> golden_messages() {
+  std::vector<Golden> all;
+  {
+    pb::Message m;
+    auto& h = *m.mutable_handshake();
+    h.set_protocol_version(1);
+    h.set_session_id(0x5AFEC0DE00000001ull);
+    h.set_source_id(1);
+    h.set_destination_id(2);
+    h.set_grid_fingerprint(0x1111222233334444ull);
+    h.set_lut_fingerprint(0x5555666677778888ull);
+    h.set_map_cycle_us(33333);
+    h.set_control_cycle_us(4000);
+    h.set_watchdog_us(100000);
+    h.set_max_data_age_us(150000);
+    h.set_keyframe_after_cycles(10);
+    h.set_accepted(true);
+    all.push_back({"handshake", m});
+  }
+  {
+    pb::Message m;
+    auto& c = *m.mutable_map_chunk();
+    c.set_kind(pb::MAP_UPDATE_KIND_DELTA);
+    c.set_map_version(12);
+    c.set_base_version(11);
+    c.set_map_hash(0xEF0E2F9EF4C41E07ull);
+    c.set_chunk_index(0);
+    c.set_chunk_count(1);
+    c.set_first_cell(0);
+    c.set_end_cell(100);
+    c.set_runs(std::string("\x00\x03\x04\x0B\x59\x03", 6));
+    c.set_healthy_cameras(4);
+    c.set_camera_count(4);
+    all.push_back({"map_chunk", m});
+  }
+  {
+    pb::Message m;
+    m.mutable_keyframe_request()->set_held_map_version(11);
+    all.push_back({"keyframe_request", m});
+  }
+  {
+    pb::Message m;
+    auto& j = *m.mutable_joint_state();
+    j.set_controller_time_ns(123456789012ull);
+    for (double q : {0.1, -0.2, 0.3, -0.4, 0.5, -0.6}) j.add_position_rad(q);
+    for (double v : {1.0, 0.0, -1.0, 0.5, 0.0, 0.25}) j.add_velocity_rad_s(v);
+    j.set_applied_map_version(12);
+    j.set_state(pb::CONTROLLER_STATE_SLOWED);
+    j.set_speed_scale(0.5);
+    all.push_back({"joint_state", m});
+  }
+  {
+    pb::Message m;
+    m.mutable_heartbeat()->set_counter(77);
+    all.push_back({"heartbeat", m});
+  }
+  {
+    pb::Message m;
+    auto& e = *m.mutable_clock_echo();
+    e.set_echo_id(5);
+    e.set_request_sent_ns(1000);
+    e.set_request_received_ns(2000);
+    e.set_reply_sent_ns(2500);
+    all.push_back({"clock_echo", m});
+  }
+  {
+    pb::Message m;
+    m.mutable_stop_request()->set_cause(pb::FAULT_CAUSE_OPERATOR);
+    m.mutable_stop_request()->set_detail("stop button on the pendant");
+    all.push_back({"stop_request", m});
+  }
+  {
+    pb::Message m;
+    auto& s = *m.mutable_status_report();
+    s.set_healthy_cameras(3);
+    s.set_camera_count(4);
+    s.set_camera_threshold(2);
+    s.set_forbidden_cells(1234);
+    s.set_fusion_us(180);
+    all.push_back({"status_report", m});
+  }
+  {
+    pb::Message m;
+    m.mutable_fault_report()->set_cause(pb::FAULT_CAUSE_MAP_REFUSED);
+    m.mutable_fault_report()->set_sequence(99);
+    m.mutable_fault_report()->set_detail("hash mismatch");
+    all.push_back({"fault_report", m});
+  }
+  return all;
+}
+
+std::filesystem::path golden_path(const char* name) {
+  return std::filesystem::path(SAFECELL_GOLDEN_DIR) / (std::string(name) + ".frame");
+}
+
+FrameHeader golden_header(std::uint64_t sequence) {
+  FrameHeader header;
+  header.source_id = 1;
+  header.destination_id = 2;
+  header.session_id = 0x5AFEC0DE00000001ull;
+  header.sequence = sequence;
+  header.send_time_ns = 1'000'000'000ull * sequence;
+  header.capture_time_ns = 1'000'000'000ull * sequence - 20'000'000ull;
+  return header;
+}
+
+TEST(GoldenFrames, DISABLED_Write) {
+  std::uint64_t sequence = 1;
+  for (const Golden& golden : golden_messages()) {
+    const std::string payload = golden.message.SerializeAsString();
+    std::vector<std::uint8_t> frame(kMaxFrameBytes);
+    const Result<std::size_t> size =
+        write_frame(golden_header(sequence++), kGoldenFingerprint,
+                    reinterpret_cast<const std::uint8_t*>(payload.data()), payload.size(),
+                    frame.data(), frame.size());
+    ASSERT_TRUE(size.ok());
+    std::ofstream out(golden_path(golden.name), std::ios::binary);
+    out.write(reinterpret_cast<const char*>(frame.data()),
+              static_cast<std::streamsize>(size.value()));
+    ASSERT_TRUE(out.good()) << golden_path(golden.name);
+  }
+}
+
+TEST(GoldenFrames, EveryGoldenFrameOpensAndDecodesOnBothSides) {
+  std::uint64_t sequence = 1;
+  for (const Golden& golden : golden_messages()) {
+    std::ifstream in(golden_path(golden.name), std::ios::binary);
+    ASSERT_TRUE(in.good()) << "missing " << golden_path(golden.name);
+    const std::vector<std::uint8_t> frame{std::istreambuf_iterator<char>(in), {}};
+    const Result<FrameView, LinkFault> opened =
+        open_frame(frame.data(), frame.size(), kGoldenFingerprint);
+    ASSERT_TRUE(opened.ok()) << golden.name << ": " << to_string(opened.error().error);
+    EXPECT_EQ(opened.value().header.sequence, sequence) << golden.name;
+    EXPECT_EQ(opened.value().header.capture_time_ns, golden_header(sequence).capture_time_ns);
+    ++sequence;
+    // The controller's side.
+    safecell_v1_Message controller_side;
+    ASSERT_EQ(decode_message(opened.value().payload, opened.value().payload_size, controller_side),
+              Status::kOk)
+        << golden.name;
+    EXPECT_EQ(controller_side.which_body, static_cast<pb_size_t>(golden.message.body_case()))
+        << golden.name;
+    // The coprocessor's side.
+    pb::Message coprocessor_side;
+    ASSERT_TRUE(coprocessor_side.ParseFromArray(opened.value().payload,
+                                                static_cast<int>(opened.value().payload_size)));
+    EXPECT_TRUE(
+        google::protobuf::util::MessageDifferencer::Equals(coprocessor_side, golden.message))
+        << golden.name << ": " << coprocessor_side.ShortDebugString();
+  }
+}
+
+TEST(GoldenFrames, AFrameOfAnotherVersionIsRefusedNamingIt) {
+  std::ifstream in(golden_path("heartbeat"), std::ios::binary);
+  std::vector<std::uint8_t> frame{std::istreambuf_iterator<char>(in), {}};
+  ASSERT_GT(frame.size(), 3u);
+  frame[2] = 7;
+  const Result<FrameView, LinkFault> opened =
+      open_frame(frame.data(), frame.size(), kGoldenFingerprint);
+  ASSERT_FALSE(opened.ok());
+  EXPECT_EQ(opened.error().error, LinkError::kWrongConfiguration);
+  EXPECT_EQ(opened.error().detail, 7u);
+}
+
+}  // namespace
+}  // namespace safecell
