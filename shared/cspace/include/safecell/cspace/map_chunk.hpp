@@ -40,10 +40,18 @@ CellIndex encode_delta_chunk(const std::uint64_t* base, const std::uint64_t* tar
                              CellIndex cell_count, CellIndex from, std::uint8_t* out,
                              std::size_t capacity, std::size_t& out_size);
 
+// The cells an applied chunk may have changed: [begin, end), empty when begin == end.
+struct CellSpan {
+  CellIndex begin = 0;
+  CellIndex end = 0;
+};
+
 // Applies one chunk to `words` (a map of cell_count cells). The chunk is checked whole before any
 // bit changes: a range outside the grid or reversed, a malformed run list, a run outside the
 // range or, in a keyframe, a clear run, are refused (kOutOfRange / kInvalidArgument) with `words`
-// untouched.
-Status apply_map_chunk(const MapChunkView& chunk, std::uint64_t* words, CellIndex cell_count);
+// untouched. `changed`, when given, receives the span the chunk may have changed (a keyframe
+// chunk: its whole range; a delta chunk: from its first run to its last).
+Status apply_map_chunk(const MapChunkView& chunk, std::uint64_t* words, CellIndex cell_count,
+                       CellSpan* changed = nullptr);
 
 }  // namespace safecell

@@ -1,0 +1,206 @@
+// The receiving end of map updates: whole updates replace the held map, torn, stale, foreign or
+// corrupt ones never do (checked against the sender's dense maps).
+
+#include "safecell/cspace/map_assembler.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "safecell/cspace/cell_bits.hpp"
+#include "safecell/cspace/map_hash.hpp"
+#include "safecell/test/property.hpp"
+
+namespace safecell {
+namespace {
+
+using Words = std::vector<std::uint64_t>;
+
+struct SentChunk {
+  MapChunkHeader header;
+  std::vector<std::uint8_t> runs;
+};
+
+// What a sender emits for `target` (a keyframe when base is null, else the delta base -> target).
+std::vector<SentChunk> update_of(const Words* base, std::uint64_t base_version, const Words& target,
+                                 std::uint64_t version, CellIndex cells, std::size_t capacity) {
+  std::vector<SentChunk> chunks;
+  CellIndex from = 0;
+  do {
+    SentChunk chunk;
+    chunk.header.kind = base ? MapChunkKind::kDelta : MapChunkKind::kKeyframe;
+    chunk.header.map_version = version;
+    chunk.header.base_version = base ? base_version : 0;
+    chunk.header.map_hash = map_hash(target.data(), cells);
+    chunk.header.chunk_index = static_cast<std::uint32_t>(chunks.size());
+    chunk.header.first_cell = from;
+    chunk.runs.resize(capacity);
+    std::size_t size = 0;
+    chunk.header.end_cell =
+        base ? encode_delta_chunk(base->data(), target.data(), cells, from, chunk.runs.data(),
+                                  capacity, size)
+             : encode_keyframe_chunk(target.data(), cells, from, chunk.runs.data(), capacity, size);
+    chunk.runs.resize(size);
+    from = chunk.header.end_cell;
+    chunks.push_back(std::move(chunk));
+  } while (from < cells);
+  for (auto& chunk : chunks) chunk.header.chunk_count = static_cast<std::uint32_t>(chunks.size());
+  return chunks;
+}
+
+class Receiver {
+ public:
+  explicit Receiver(CellIndex cells)
+      : cells_(cells),
+        words_{Words(cell_bits::words_for(cells)), Words(cell_bits::words_for(cells))},
+        hashes_{Words(map_hash_blocks(cells)), Words(map_hash_blocks(cells))},
+        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
+                   cells) {}
+
+  MapAssembler::Offer offer(const SentChunk& chunk) {
+    return assembler_.offer(chunk.header, chunk.runs.data(), chunk.runs.size());
+  }
+  // Over a whole update: its refusal, else the last chunk's outcome.
+  MapAssembler::Offer offer_all(const std::vector<SentChunk>& chunks) {
+    MapAssembler::Offer last;
+    for (const SentChunk& chunk : chunks) {
+      last = offer(chunk);
+      if (last.outcome == MapAssembler::Outcome::kRefused) return last;
+    }
+    return last;
+  }
+  Words held() const {
+    return Words(assembler_.map(), assembler_.map() + cell_bits::words_for(cells_));
+  }
+  const MapAssembler& assembler() const { return assembler_; }
+
+ private:
+  CellIndex cells_;
+  Words words_[2];
+  Words hashes_[2];
+  MapAssembler assembler_;
+};
+
+Words random_map(CellIndex cells, std::mt19937_64& rng) {
+  Words words(cell_bits::words_for(cells), 0);
+  for (CellIndex at = 0; at < cells;) {
+    const CellIndex end = std::min(cells, static_cast<CellIndex>(at + 1 + rng() % 400));
+    if (rng() % 2 == 0) cell_bits::set_range(words.data(), at, end);
+    at = end;
+  }
+  return words;
+}
+
+TEST(MapAssembler, StartsWithNoMapAndEverythingForbidden) {
+  Receiver receiver(1000);
+  EXPECT_EQ(receiver.assembler().version(), 0u);
+  EXPECT_EQ(cell_bits::count(receiver.assembler().map(), 0, 1000), 1000u);
+}
+
+TEST(MapAssembler, KeyframeThenDeltasRebuildTheSendersMaps) {
+  test::PropertyRun run(60);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto cells = static_cast<CellIndex>(1 + run.rng()() % 30000);
+    const std::size_t capacity = kMaxRunRecordBytes + run.rng()() % 600;
+    Receiver receiver(cells);
+    Words sent = random_map(cells, run.rng());
+    const std::string input =
+        "cells " + std::to_string(cells) + ", capacity " + std::to_string(capacity);
+    auto result = receiver.offer_all(update_of(nullptr, 0, sent, 1, cells, capacity));
+    ASSERT_EQ(result.outcome, MapAssembler::Outcome::kApplied) << input;
+    ASSERT_EQ(receiver.held(), sent) << input;
+    for (std::uint64_t version = 2; version < 6; ++version) {
+      Words next = sent;
+      const auto begin = static_cast<CellIndex>(run.rng()() % cells);
+      const auto end = static_cast<CellIndex>(begin + 1 + run.rng()() % (cells - begin));
+      if (run.rng()() % 2 == 0) {
+        cell_bits::set_range(next.data(), begin, end);
+      } else {
+        cell_bits::clear_range(next.data(), begin, end);
+      }
+      result = receiver.offer_all(update_of(&sent, version - 1, next, version, cells, capacity));
+      ASSERT_EQ(result.outcome, MapAssembler::Outcome::kApplied) << input << ", v" << version;
+      ASSERT_EQ(receiver.held(), next) << input << ", v" << version;
+      ASSERT_EQ(receiver.assembler().version(), version);
+      sent = next;
+    }
+  }
+}
+
+class MapAssemblerFaults : public ::testing::Test {
+ protected:
+  static constexpr CellIndex kCells = 40000;
+  MapAssemblerFaults() : rng_(17), a_(random_map(kCells, rng_)), b_(random_map(kCells, rng_)) {
+    EXPECT_EQ(receiver_.offer_all(update_of(nullptr, 0, a_, 1, kCells, 200)).outcome,
+              MapAssembler::Outcome::kApplied);
+  }
+  void expect_held_a() {
+    EXPECT_EQ(receiver_.held(), a_);
+    EXPECT_EQ(receiver_.assembler().version(), 1u);
+  }
+  std::mt19937_64 rng_;
+  Words a_, b_;
+  Receiver receiver_{kCells};
+};
+
+TEST_F(MapAssemblerFaults, ATornUpdateIsRefusedOnceAndNeverApplied) {
+  std::vector<SentChunk> delta = update_of(&a_, 1, b_, 2, kCells, 64);
+  ASSERT_GT(delta.size(), 3u);
+  delta.erase(delta.begin() + 1);  // lost
+  EXPECT_EQ(receiver_.offer(delta[0]).outcome, MapAssembler::Outcome::kPending);
+  const auto torn = receiver_.offer(delta[1]);
+  EXPECT_EQ(torn.outcome, MapAssembler::Outcome::kRefused);
+  EXPECT_EQ(torn.refusal, MapRefusal::kTorn);
+  for (std::size_t c = 2; c < delta.size(); ++c) {
+    EXPECT_EQ(receiver_.offer(delta[c]).outcome, MapAssembler::Outcome::kIgnored);
+  }
+  expect_held_a();
+  // The next delta, against the version the receiver still acknowledges, repairs it.
+  EXPECT_EQ(receiver_.offer_all(update_of(&a_, 1, b_, 3, kCells, 64)).outcome,
+            MapAssembler::Outcome::kApplied);
+  EXPECT_EQ(receiver_.held(), b_);
+}
+
+TEST_F(MapAssemblerFaults, ADeltaOnAnotherBaseIsRefused) {
+  const auto result = receiver_.offer_all(update_of(&b_, 7, a_, 8, kCells, 200));
+  EXPECT_EQ(result.refusal, MapRefusal::kBaseMismatch);
+  expect_held_a();
+}
+
+TEST_F(MapAssemblerFaults, AnOldVersionIsRefused) {
+  const auto result = receiver_.offer_all(update_of(nullptr, 0, b_, 1, kCells, 200));
+  EXPECT_EQ(result.refusal, MapRefusal::kStaleVersion);
+  expect_held_a();
+}
+
+// The negative control of the hash check: a delta whose runs were changed after the sender hashed
+// its map (a sender bug or a corruption the CRC missed) applies cleanly but must not be taken.
+TEST_F(MapAssemblerFaults, AWrongResultIsAHashMismatch) {
+  std::vector<SentChunk> delta = update_of(&a_, 1, b_, 2, kCells, 100000);
+  ASSERT_EQ(delta.size(), 1u);
+  ASSERT_GE(delta[0].runs.size(), 2u);
+  delta[0].runs[1] ^= 0x02;  // one run two cells longer or shorter
+  const auto result = receiver_.offer_all(delta);
+  EXPECT_EQ(result.outcome, MapAssembler::Outcome::kRefused);
+  EXPECT_TRUE(result.refusal == MapRefusal::kHashMismatch ||
+              result.refusal == MapRefusal::kBadChunk)
+      << to_string(result.refusal);
+  expect_held_a();
+}
+
+TEST_F(MapAssemblerFaults, MalformedChunksAreRefused) {
+  std::vector<SentChunk> delta = update_of(&a_, 1, b_, 2, kCells, 200);
+  delta[0].runs.push_back(0x80);  // a truncated record
+  EXPECT_EQ(receiver_.offer(delta[0]).refusal, MapRefusal::kBadChunk);
+  std::vector<SentChunk> early = update_of(&a_, 1, b_, 3, kCells, 200);
+  early.back().header.end_cell = kCells - 1;  // the last chunk stops short of the grid
+  EXPECT_EQ(receiver_.offer_all(early).refusal, MapRefusal::kBadChunk);
+  std::vector<SentChunk> past = update_of(&a_, 1, b_, 4, kCells, 200);
+  past[0].header.end_cell = kCells + 1;
+  EXPECT_EQ(receiver_.offer(past[0]).refusal, MapRefusal::kBadChunk);
+  expect_held_a();
+}
+
+}  // namespace
+}  // namespace safecell
