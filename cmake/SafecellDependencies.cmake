@@ -9,3 +9,5 @@ find_package(urdfdom REQUIRED)
 find_package(assimp REQUIRED)
 find_package(fcl REQUIRED)
 find_package(benchmark REQUIRED)
+find_package(Boost 1.74 REQUIRED)  # Boost.Asio (header-only) for the link
+find_package(Threads REQUIRED)

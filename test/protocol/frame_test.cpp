@@ -114,6 +114,20 @@ TEST(Frame, ADifferentImplicitFingerprintFailsTheCrc) {
   EXPECT_EQ(opened.error().error, LinkError::kCorruption);
 }
 
+TEST(Frame, HandshakeFramesUseFingerprintZeroSoEitherEndCanOpenThem) {
+  FrameHeader header = some_header();
+  header.flags = kFrameFlagHandshake;
+  std::uint8_t frame[64];
+  const Result<std::size_t> size = write_frame(header, kFingerprint, nullptr, 0, frame, 64);
+  ASSERT_TRUE(size.ok());
+  const auto opened = open_frame(frame, size.value(), kFingerprint ^ 0xFF);
+  ASSERT_TRUE(opened.ok());
+  EXPECT_TRUE(opened.value().is_handshake());
+  // Undefined flag bits are refused, on writing and on reading.
+  header.flags = 0x02;
+  EXPECT_EQ(write_frame(header, 0, nullptr, 0, frame, 64).error(), Status::kInvalidArgument);
+}
+
 TEST(Frame, EverySingleBitFlipOfAFullSizeFrameIsRefused) {
   std::vector<std::uint8_t> frame = frame_with_payload(kMaxPayloadBytes);
   ASSERT_EQ(frame.size(), kMaxFrameBytes);

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <random>
 
 #include "coverage_picture.hpp"
@@ -23,7 +22,7 @@
 #include "safecell/pipeline/sensing_pipeline.hpp"
 #include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
-#include "safecell/sim/human_walker.hpp"
+#include "safecell/sim/demo_scenario.hpp"
 #include "safecell/validation/percentile.hpp"
 #include "safecell/validation/scene_check.hpp"
 #include "scene_options.hpp"
@@ -33,36 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kHumanEnters_s = 1.0;
-constexpr double kHumanSpeed_m_s = 1.0;
 constexpr std::size_t kReferenceFrames = 9;
-
-// The robot's path: every joint swings about a middle value, each at its own period, kept inside
-// the grid's ranges.
-std::vector<double> robot_at(const CspaceGrid& grid, double time_s) {
-  struct Swing {
-    double middle_rad, amplitude_rad, period_s;
-  };
-  constexpr Swing kSwings[] = {{0.0, 1.0, 10.0}, {0.2, 0.4, 7.0}, {0.9, 0.5, 5.0},
-                               {0.0, 0.8, 9.0},  {0.6, 0.4, 4.0}, {0.0, 1.0, 6.0}};
-  std::vector<double> q(grid.joint_count());
-  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
-    const Swing swing = j < std::size(kSwings) ? kSwings[j] : Swing{0.0, 0.0, 1.0};
-    const double value = swing.middle_rad + swing.amplitude_rad * std::sin(2.0 * std::numbers::pi *
-                                                                           time_s / swing.period_s);
-    const JointSpec& joint = grid.joint(j);
-    const double margin = 1e-6 * (joint.hi_rad - joint.lo_rad);
-    q[j] = std::clamp(value, joint.lo_rad + margin, joint.hi_rad - margin);
-  }
-  return q;
-}
-
-// A person walking in from one corner, past the robot within reach of its arm, out to another.
-HumanWalker person_walking(const CellModel& cell) {
-  const double x = cell.config.size_m[0] / 2.0 - 0.3;
-  const double y = cell.config.size_m[1] / 2.0 - 0.3;
-  return HumanWalker({{x, -y}, {0.9, -0.5}, {0.9, 0.5}, {x, y}}, kHumanSpeed_m_s, 0.3);
-}
 
 std::string numbered(const char* stem, std::size_t cycle, const char* suffix) {
   char name[64];
@@ -121,7 +91,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   FusionSettings fusion;
   fusion.camera_threshold = cell.camera_threshold;
   SensingPipeline pipeline(cell, grid, luts.set, silhouettes, reference.frames, {}, fusion);
-  const HumanWalker walker = person_walking(cell);
+  const HumanWalker walker = demo_person(cell);
 
   const auto cycles = static_cast<std::size_t>(std::ceil(options.seconds * options.fps));
   const bool interactive = &err == &std::cerr && ProgressBar::stderr_is_terminal();
@@ -134,10 +104,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   nlohmann::ordered_json timeline = nlohmann::ordered_json::array();
   for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
     const double time_s = static_cast<double>(cycle) / options.fps;
-    SimScene scene{robot_at(grid, time_s), {}};
-    if (time_s >= kHumanEnters_s && time_s - kHumanEnters_s <= walker.arrival_time_s()) {
-      scene.humans.push_back(walker.pose_at(time_s - kHumanEnters_s));
-    }
+    const SimScene scene = demo_scene(grid, walker, time_s);
     std::vector<cv::Mat> object_ids;
     const std::vector<cv::Mat> frames = sim.render(scene, cycle, time_s, &object_ids);
     const CellSet& forbidden = pipeline.process(frames, scene.q);

@@ -1,6 +1,7 @@
 #include "safecell/protocol/frame.hpp"
 
 #include "safecell/base/crc32.hpp"
+#include "safecell/base/fnv1a.hpp"
 
 namespace safecell {
 namespace {
@@ -17,10 +18,19 @@ std::uint64_t get(const std::uint8_t* at, int bytes) noexcept {
 
 }  // namespace
 
+std::uint64_t configuration_fingerprint(std::uint64_t grid_fingerprint,
+                                        std::uint64_t lut_fingerprint) noexcept {
+  Fnv1a64 hash;
+  hash.add_u64(grid_fingerprint);
+  hash.add_u64(lut_fingerprint);
+  return hash.value();
+}
+
 std::uint32_t frame_crc(const std::uint8_t* frame, std::size_t size,
                         std::uint64_t configuration_fingerprint) noexcept {
+  const bool handshake = size > 3 && (frame[3] & kFrameFlagHandshake) != 0;
   std::uint8_t implicit[8];
-  put(implicit, configuration_fingerprint, 8);
+  put(implicit, handshake ? 0 : configuration_fingerprint, 8);
   SafetyCrc32 crc;
   crc.update(implicit, sizeof implicit);
   crc.update(frame, size - kFrameCrcBytes);
@@ -34,9 +44,10 @@ Result<std::size_t> write_frame(const FrameHeader& header, std::uint64_t configu
   const std::size_t size = kFrameOverheadBytes + payload_size;
   if (size > capacity) return Status::kCapacityExceeded;
   if (payload_size > 0 && payload == nullptr) return Status::kInvalidArgument;
+  if ((header.flags & ~kFrameFlagHandshake) != 0) return Status::kInvalidArgument;
   put(out + 0, size, 2);
   out[2] = header.version;
-  out[3] = 0;
+  out[3] = header.flags;
   put(out + 4, header.source_id, 4);
   put(out + 8, header.destination_id, 4);
   put(out + 12, header.session_id, 8);
@@ -59,9 +70,10 @@ Result<FrameView, LinkFault> open_frame(const std::uint8_t* frame, std::size_t s
   if (get(frame + size - kFrameCrcBytes, 4) != frame_crc(frame, size, configuration_fingerprint)) {
     return LinkFault{LinkError::kCorruption, 0};
   }
-  if (frame[3] != 0) return LinkFault{LinkError::kCorruption, 0};
+  if ((frame[3] & ~kFrameFlagHandshake) != 0) return LinkFault{LinkError::kCorruption, 0};
   FrameView view;
   view.header.version = frame[2];
+  view.header.flags = frame[3];
   view.header.source_id = static_cast<std::uint32_t>(get(frame + 4, 4));
   view.header.destination_id = static_cast<std::uint32_t>(get(frame + 8, 4));
   view.header.session_id = get(frame + 12, 8);

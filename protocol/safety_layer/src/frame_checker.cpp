@@ -3,15 +3,23 @@
 namespace safecell {
 
 FrameChecker::FrameChecker(const LinkEndpoints& endpoints, const ArrivalLimits& limits,
-                           std::uint64_t now_ns) noexcept
-    : endpoints_(endpoints), limits_(limits), last_accepted_ns_(now_ns) {}
+                           std::uint64_t now_ns, std::uint64_t last_sequence) noexcept
+    : endpoints_(endpoints),
+      limits_(limits),
+      last_sequence_(last_sequence),
+      last_accepted_ns_(now_ns) {}
 
 Result<AcceptedFrame, LinkFault> FrameChecker::check(const std::uint8_t* frame, std::size_t size,
                                                      std::uint64_t now_ns) noexcept {
   const Result<FrameView, LinkFault> opened =
       open_frame(frame, size, endpoints_.configuration_fingerprint);
   if (!opened.ok()) return opened.error();
-  const FrameHeader& header = opened.value().header;
+  return check_opened(opened.value(), now_ns);
+}
+
+Result<AcceptedFrame, LinkFault> FrameChecker::check_opened(const FrameView& frame,
+                                                            std::uint64_t now_ns) noexcept {
+  const FrameHeader& header = frame.header;
   if (header.destination_id != endpoints_.own_id) {
     return LinkFault{LinkError::kAddressing, header.destination_id};
   }
@@ -30,11 +38,13 @@ Result<AcceptedFrame, LinkFault> FrameChecker::check(const std::uint8_t* frame, 
   }
   // Authentic and in order from here on: it moves the sequence even when it is too old.
   AcceptedFrame accepted;
-  accepted.frame = opened.value();
+  accepted.frame = frame;
   accepted.lost = header.sequence - last_sequence_ - 1;
   last_sequence_ = header.sequence;
   last_send_time_ns_ = header.send_time_ns;
-  if (header.capture_time_ns > now_ns) {
+  if (header.capture_time_ns == 0) {
+    // A control frame without data (handshake answers, clock echoes): nothing ages.
+  } else if (header.capture_time_ns > now_ns) {
     const std::uint64_t lead = header.capture_time_ns - now_ns;
     if (lead > limits_.max_clock_lead_ns) return LinkFault{LinkError::kDelay, lead};
   } else {
@@ -56,8 +66,10 @@ LinkFault FrameChecker::watchdog(std::uint64_t now_ns) const noexcept {
 
 Result<std::size_t> FrameSealer::seal(const std::uint8_t* payload, std::size_t payload_size,
                                       std::uint64_t send_time_ns, std::uint64_t capture_time_ns,
-                                      std::uint8_t* out, std::size_t capacity) noexcept {
+                                      std::uint8_t* out, std::size_t capacity,
+                                      std::uint8_t flags) noexcept {
   FrameHeader header;
+  header.flags = flags;
   header.source_id = endpoints_.own_id;
   header.destination_id = endpoints_.peer_id;
   header.session_id = endpoints_.session_id;

@@ -38,22 +38,31 @@ struct AcceptedFrame {
 
 class FrameChecker {
  public:
-  // The watchdog starts at `now_ns`. The first frame of a session has sequence number 1.
-  FrameChecker(const LinkEndpoints& endpoints, const ArrivalLimits& limits,
-               std::uint64_t now_ns) noexcept;
+  // The watchdog starts at `now_ns`. The next frame expected has sequence number
+  // last_sequence + 1 (a session opened by a handshake frame continues after its number).
+  FrameChecker(const LinkEndpoints& endpoints, const ArrivalLimits& limits, std::uint64_t now_ns,
+               std::uint64_t last_sequence = 0) noexcept;
 
   // Checks in this order: length, version, CRC (frame.hpp), destination (kAddressing), source
   // (kInsertion), session (kMasquerade), sequence (kRepetition, kIncorrectSequence), send time
   // running back (kIncorrectSequence), data age (kDelay). A frame refused for its age still
   // advances the sequence (it is authentic, only stale), so it does not also count as a loss.
+  // Capture time 0 marks a control frame without data (clock echoes before the clock is synced):
+  // its age is not checked, so a receiver must refuse data (a map) that comes with capture 0.
   Result<AcceptedFrame, LinkFault> check(const std::uint8_t* frame, std::size_t size,
                                          std::uint64_t now_ns) noexcept;
+  // The same for a frame already opened with this session's fingerprint (open_frame): from the
+  // destination check on.
+  Result<AcceptedFrame, LinkFault> check_opened(const FrameView& frame,
+                                                std::uint64_t now_ns) noexcept;
 
   // kTimeout (detail: ns since the last accepted frame) once the watchdog expired; else kNone.
   LinkFault watchdog(std::uint64_t now_ns) const noexcept;
 
   std::uint64_t last_sequence() const noexcept { return last_sequence_; }
   const LinkEndpoints& endpoints() const noexcept { return endpoints_; }
+  // New limits from the next frame on (the coprocessor tightens them once its clock is synced).
+  void set_limits(const ArrivalLimits& limits) noexcept { limits_ = limits; }
 
  private:
   LinkEndpoints endpoints_;
@@ -68,10 +77,14 @@ class FrameSealer {
  public:
   explicit FrameSealer(const LinkEndpoints& endpoints) noexcept : endpoints_(endpoints) {}
 
+  const LinkEndpoints& endpoints() const noexcept { return endpoints_; }
+
   // Writes the next frame (sequence number last + 1) into out[0..capacity); see write_frame.
+  // flags: kFrameFlagHandshake for the frames of the handshake.
   Result<std::size_t> seal(const std::uint8_t* payload, std::size_t payload_size,
                            std::uint64_t send_time_ns, std::uint64_t capture_time_ns,
-                           std::uint8_t* out, std::size_t capacity) noexcept;
+                           std::uint8_t* out, std::size_t capacity,
+                           std::uint8_t flags = 0) noexcept;
 
   std::uint64_t last_sequence() const noexcept { return last_sequence_; }
 

@@ -1,0 +1,133 @@
+#pragma once
+// The controller's end of the link: the session with the coprocessor, the map updates it brings,
+// and the joint stream (with the map acknowledgement) it sends back.
+//
+//   handshake   the coprocessor opens a session (handshake frame, implicit fingerprint 0); the
+//               controller checks the protocol version, both fingerprints and the ids against its
+//               own configuration and answers accepted or not. A new session forgets the held
+//               map: no motion until a keyframe of the new session is verified.
+//   data frames checked by the safety layer (frame_checker.hpp); map chunks go to the
+//               MapAssembler; clock echoes are answered at once; stop requests are latched.
+// Every detected communication error is counted and fed to the error latch (a second one within
+// the window latches a stop until acknowledge()).
+//
+// Clocks: all `now_ns` are the controller's monotonic clock, and so are the frame times the
+// coprocessor sends (it converts its own clock with the offset it measures by ClockEcho), so the
+// data-age check needs no clock of the coprocessor's here.
+// Thread context: the controller's cycle task; not synchronised. Real-time: no allocation; poll()
+// handles at most kMaxFramesPerPoll frames.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "safecell/controller/link_port.hpp"
+#include "safecell/cspace/map_assembler.hpp"
+#include "safecell/protocol/error_latch.hpp"
+#include "safecell/protocol/frame_checker.hpp"
+#include "safecell/v1/message.nanopb.h"
+
+namespace safecell {
+
+struct ControllerLinkConfig {
+  std::uint32_t controller_id = 2;
+  std::uint32_t coprocessor_id = 1;
+  std::uint64_t grid_fingerprint = 0;       // CspaceGrid::fingerprint() of the controller's grid
+  std::uint64_t lut_fingerprint = 0;        // the LUTs the cell was commissioned with
+  std::uint64_t watchdog_ns = 100'000'000;  // T_wd: no map update applied for longer stops
+  std::uint64_t max_data_age_ns = 150'000'000;  // a frame's capture older than this is refused
+  std::uint64_t max_clock_lead_ns = 5'000'000;  // the coprocessor's clock-offset uncertainty
+  std::uint64_t latch_window_ns = kDefaultLatchWindowNs;
+};
+
+// The joints of one control cycle, as the controller read them.
+struct JointSample {
+  std::uint32_t joint_count = 0;
+  double position_rad[8]{};
+  double velocity_rad_s[8]{};
+  std::uint64_t read_time_ns = 0;  // controller clock
+};
+
+// Why the link does not allow motion now (kNone: it does).
+enum class LinkBlock : std::uint8_t {
+  kNone = 0,
+  kNoSession,      // no handshake accepted yet
+  kNoMap,          // session up, no keyframe verified yet
+  kMapTooOld,      // no map update applied within T_wd
+  kLatched,        // a second error within the window; needs acknowledge()
+  kStopRequested,  // the coprocessor or an operator asked for a stop; needs acknowledge()
+};
+
+const char* to_string(LinkBlock block) noexcept;
+
+class ControllerLink {
+ public:
+  static constexpr int kMaxFramesPerPoll = 64;
+
+  ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
+                 MapAssembler& assembler) noexcept;
+
+  // Handles the frames waiting on the port.
+  void poll(std::uint64_t now_ns) noexcept;
+
+  // Sends this cycle's joint state; it carries the held map's version as the acknowledgement.
+  void send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
+                        double speed_scale, std::uint64_t now_ns) noexcept;
+
+  LinkBlock block(std::uint64_t now_ns) const noexcept;
+  // Clears the error latch and a requested stop (an operator's acknowledgement).
+  void acknowledge() noexcept;
+
+  bool session_up() const noexcept { return session_up_; }
+  std::uint64_t session_id() const noexcept { return session_id_; }
+  // The capture time of the held map's data (controller clock); 0 without a map.
+  std::uint64_t map_capture_ns() const noexcept { return map_capture_ns_; }
+  std::uint32_t healthy_cameras() const noexcept { return healthy_cameras_; }
+  const ErrorLatch& latch() const noexcept { return latch_; }
+  const LinkFault& last_fault() const noexcept { return last_fault_; }
+  MapRefusal last_map_refusal() const noexcept { return last_map_refusal_; }
+  std::uint64_t updates_applied() const noexcept { return updates_applied_; }
+  std::uint64_t updates_refused() const noexcept { return updates_refused_; }
+  safecell_v1_FaultCause stop_cause() const noexcept { return stop_cause_; }
+
+ private:
+  void handle_datagram(const std::uint8_t* data, std::size_t size, std::uint64_t now_ns) noexcept;
+  void handle_handshake(const FrameView& frame, std::uint64_t now_ns) noexcept;
+  void handle_message(const FrameView& frame, std::uint64_t now_ns) noexcept;
+  void handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
+                        std::uint64_t now_ns) noexcept;
+  void detected(const LinkFault& fault, std::uint64_t now_ns) noexcept;
+  // Encodes reply_ and sends it sealed by `sealer`.
+  void send(FrameSealer& sealer, std::uint64_t capture_ns, std::uint64_t now_ns,
+            std::uint8_t flags = 0) noexcept;
+
+  ControllerLinkConfig config_;
+  LinkPort& port_;
+  MapAssembler& assembler_;
+  ArrivalLimits limits_;
+  std::uint64_t fingerprint_;
+
+  bool session_up_ = false;
+  std::uint64_t session_id_ = 0;
+  FrameChecker checker_;
+  FrameSealer sealer_;
+  ErrorLatch latch_;
+  LinkFault last_fault_{};
+  bool stop_requested_ = false;
+  safecell_v1_FaultCause stop_cause_ = safecell_v1_FaultCause_FAULT_CAUSE_UNSPECIFIED;
+
+  std::uint64_t map_capture_ns_ = 0;
+  std::uint64_t map_applied_ns_ = 0;
+  std::uint32_t healthy_cameras_ = 0;
+  MapRefusal last_map_refusal_ = MapRefusal::kNone;
+  std::uint64_t updates_applied_ = 0;
+  std::uint64_t updates_refused_ = 0;
+
+  // Scratch (static size: no heap, no large stack frames in the cycle).
+  std::uint8_t datagram_[kMaxFrameBytes + 1]{};
+  std::uint8_t payload_[kMaxPayloadBytes]{};
+  std::uint8_t outgoing_[kMaxFrameBytes]{};
+  safecell_v1_Message incoming_{};
+  safecell_v1_Message reply_{};
+};
+
+}  // namespace safecell

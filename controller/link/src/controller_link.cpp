@@ -1,0 +1,261 @@
+#include "safecell/controller/controller_link.hpp"
+
+#include "safecell/protocol/nanopb_codec.hpp"
+
+namespace safecell {
+namespace {
+
+MapChunkHeader chunk_header_of(const safecell_v1_MapChunk& chunk) noexcept {
+  MapChunkHeader header;
+  header.kind = chunk.kind == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
+                    ? MapChunkKind::kDelta
+                    : MapChunkKind::kKeyframe;
+  header.map_version = chunk.map_version;
+  header.base_version = chunk.base_version;
+  header.map_hash = chunk.map_hash;
+  header.chunk_index = chunk.chunk_index;
+  header.chunk_count = chunk.chunk_count;
+  header.first_cell = chunk.first_cell;
+  header.end_cell = chunk.end_cell;
+  return header;
+}
+
+}  // namespace
+
+const char* to_string(LinkBlock block) noexcept {
+  switch (block) {
+    case LinkBlock::kNone:
+      return "none";
+    case LinkBlock::kNoSession:
+      return "no session";
+    case LinkBlock::kNoMap:
+      return "no verified map";
+    case LinkBlock::kMapTooOld:
+      return "no map within the watchdog time";
+    case LinkBlock::kLatched:
+      return "link errors latched";
+    case LinkBlock::kStopRequested:
+      return "stop requested";
+  }
+  return "unknown";
+}
+
+ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
+                               MapAssembler& assembler) noexcept
+    : config_(config),
+      port_(port),
+      assembler_(assembler),
+      limits_{config.max_data_age_ns, config.max_clock_lead_ns, config.watchdog_ns},
+      fingerprint_(configuration_fingerprint(config.grid_fingerprint, config.lut_fingerprint)),
+      checker_(LinkEndpoints{}, limits_, 0),
+      sealer_(LinkEndpoints{}),
+      latch_(config.latch_window_ns) {}
+
+void ControllerLink::poll(std::uint64_t now_ns) noexcept {
+  for (int frame = 0; frame < kMaxFramesPerPoll; ++frame) {
+    const std::size_t size = port_.receive(datagram_, sizeof datagram_);
+    if (size == 0) return;
+    handle_datagram(datagram_, size, now_ns);
+  }
+}
+
+void ControllerLink::detected(const LinkFault& fault, std::uint64_t now_ns) noexcept {
+  last_fault_ = fault;
+  (void)latch_.record(fault, now_ns);
+}
+
+void ControllerLink::handle_datagram(const std::uint8_t* data, std::size_t size,
+                                     std::uint64_t now_ns) noexcept {
+  const Result<FrameView, LinkFault> opened = open_frame(data, size, fingerprint_);
+  if (!opened.ok()) {
+    detected(opened.error(), now_ns);
+    return;
+  }
+  if (opened.value().is_handshake()) {
+    handle_handshake(opened.value(), now_ns);
+    return;
+  }
+  if (!session_up_) {
+    detected({LinkError::kMasquerade, opened.value().header.session_id}, now_ns);
+    return;
+  }
+  const Result<AcceptedFrame, LinkFault> accepted = checker_.check_opened(opened.value(), now_ns);
+  if (!accepted.ok()) {
+    detected(accepted.error(), now_ns);
+    return;
+  }
+  if (accepted.value().lost > 0) detected({LinkError::kLoss, accepted.value().lost}, now_ns);
+  handle_message(accepted.value().frame, now_ns);
+}
+
+void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_ns) noexcept {
+  const FrameHeader& header = frame.header;
+  if (header.destination_id != config_.controller_id) {
+    detected({LinkError::kAddressing, header.destination_id}, now_ns);
+    return;
+  }
+  if (header.source_id != config_.coprocessor_id) {
+    detected({LinkError::kInsertion, header.source_id}, now_ns);
+    return;
+  }
+  if (decode_message(frame.payload, frame.payload_size, incoming_) != Status::kOk ||
+      incoming_.which_body != safecell_v1_Message_handshake_tag) {
+    detected({LinkError::kCorruption, 0}, now_ns);
+    return;
+  }
+  const safecell_v1_Handshake& offered = incoming_.body.handshake;
+  LinkFault refusal{};
+  if (offered.protocol_version != kProtocolVersion) {
+    refusal = {LinkError::kWrongConfiguration, offered.protocol_version};
+  } else if (offered.grid_fingerprint != config_.grid_fingerprint) {
+    refusal = {LinkError::kWrongConfiguration, offered.grid_fingerprint};
+  } else if (offered.lut_fingerprint != config_.lut_fingerprint) {
+    refusal = {LinkError::kWrongConfiguration, offered.lut_fingerprint};
+  } else if (offered.session_id != header.session_id || offered.session_id == 0) {
+    refusal = {LinkError::kMasquerade, offered.session_id};
+  }
+  // The answer names this end's configuration either way, so the coprocessor can say what
+  // differs; it goes out in the offered session, sealed as a handshake frame.
+  const LinkEndpoints endpoints{config_.controller_id, config_.coprocessor_id, header.session_id,
+                                fingerprint_};
+  if (refusal.error != LinkError::kNone) {
+    detected(refusal, now_ns);  // the session in place, if any, stays as it is
+  } else {
+    // A new session: the held map belongs to the old one (or none) and is forgotten.
+    session_up_ = true;
+    session_id_ = header.session_id;
+    checker_ = FrameChecker(endpoints, limits_, now_ns, header.sequence);
+    sealer_ = FrameSealer(endpoints);
+    assembler_.reset();
+    map_capture_ns_ = 0;
+    map_applied_ns_ = 0;
+  }
+  reply_ = safecell_v1_Message_init_zero;
+  reply_.which_body = safecell_v1_Message_handshake_tag;
+  safecell_v1_Handshake& answer = reply_.body.handshake;
+  answer.protocol_version = kProtocolVersion;
+  answer.session_id = header.session_id;
+  answer.source_id = config_.controller_id;
+  answer.destination_id = config_.coprocessor_id;
+  answer.grid_fingerprint = config_.grid_fingerprint;
+  answer.lut_fingerprint = config_.lut_fingerprint;
+  answer.watchdog_us = static_cast<std::uint32_t>(config_.watchdog_ns / 1000);
+  answer.max_data_age_us = static_cast<std::uint32_t>(config_.max_data_age_ns / 1000);
+  answer.accepted = refusal.error == LinkError::kNone;
+  if (answer.accepted) {
+    send(sealer_, now_ns, now_ns, kFrameFlagHandshake);
+  } else {
+    FrameSealer refusal_sealer(endpoints);
+    send(refusal_sealer, now_ns, now_ns, kFrameFlagHandshake);
+  }
+}
+
+void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns) noexcept {
+  if (decode_message(frame.payload, frame.payload_size, incoming_) != Status::kOk) {
+    // CRC-valid but not a Message within bounds: a sender fault; refused like corruption.
+    detected({LinkError::kCorruption, frame.header.sequence}, now_ns);
+    return;
+  }
+  switch (incoming_.which_body) {
+    case safecell_v1_Message_map_chunk_tag:
+      if (frame.header.capture_time_ns == 0) {
+        detected({LinkError::kDelay, 0}, now_ns);  // a map whose age cannot be checked
+        break;
+      }
+      handle_map_chunk(incoming_.body.map_chunk, frame, now_ns);
+      break;
+    case safecell_v1_Message_clock_echo_tag: {
+      const safecell_v1_ClockEcho request = incoming_.body.clock_echo;
+      reply_ = safecell_v1_Message_init_zero;
+      reply_.which_body = safecell_v1_Message_clock_echo_tag;
+      reply_.body.clock_echo.echo_id = request.echo_id;
+      reply_.body.clock_echo.request_sent_ns = request.request_sent_ns;
+      reply_.body.clock_echo.request_received_ns = now_ns;
+      reply_.body.clock_echo.reply_sent_ns = now_ns;
+      send(sealer_, now_ns, now_ns);
+      break;
+    }
+    case safecell_v1_Message_stop_request_tag:
+      stop_requested_ = true;
+      stop_cause_ = incoming_.body.stop_request.cause;
+      break;
+    case safecell_v1_Message_status_report_tag:
+      healthy_cameras_ = incoming_.body.status_report.healthy_cameras;
+      break;
+    default:  // heartbeats, and messages meant for the coprocessor: nothing to do
+      break;
+  }
+}
+
+void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
+                                      std::uint64_t now_ns) noexcept {
+  const MapAssembler::Offer offer =
+      assembler_.offer(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size);
+  if (offer.outcome == MapAssembler::Outcome::kApplied) {
+    map_capture_ns_ = frame.header.capture_time_ns;
+    map_applied_ns_ = now_ns;
+    healthy_cameras_ = chunk.healthy_cameras;
+    ++updates_applied_;
+    return;
+  }
+  if (offer.outcome != MapAssembler::Outcome::kRefused) return;
+  ++updates_refused_;
+  last_map_refusal_ = offer.refusal;
+  // A torn update is repaired by the next delta (against the version acknowledged); a map that
+  // disagrees with the sender's needs a keyframe.
+  if (offer.refusal == MapRefusal::kHashMismatch || offer.refusal == MapRefusal::kBaseMismatch ||
+      offer.refusal == MapRefusal::kBadChunk) {
+    reply_ = safecell_v1_Message_init_zero;
+    reply_.which_body = safecell_v1_Message_keyframe_request_tag;
+    reply_.body.keyframe_request.held_map_version = assembler_.version();
+    send(sealer_, now_ns, now_ns);
+  }
+}
+
+void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
+                                      double speed_scale, std::uint64_t now_ns) noexcept {
+  if (!session_up_) return;
+  reply_ = safecell_v1_Message_init_zero;
+  reply_.which_body = safecell_v1_Message_joint_state_tag;
+  safecell_v1_JointState& out = reply_.body.joint_state;
+  const std::uint32_t count = joints.joint_count <= 8 ? joints.joint_count : 8;
+  out.controller_time_ns = joints.read_time_ns;
+  out.position_rad_count = static_cast<pb_size_t>(count);
+  out.velocity_rad_s_count = static_cast<pb_size_t>(count);
+  for (std::uint32_t j = 0; j < count; ++j) {
+    out.position_rad[j] = joints.position_rad[j];
+    out.velocity_rad_s[j] = joints.velocity_rad_s[j];
+  }
+  out.applied_map_version = assembler_.version();
+  out.state = state;
+  out.speed_scale = speed_scale;
+  send(sealer_, joints.read_time_ns, now_ns);
+}
+
+void ControllerLink::send(FrameSealer& sealer, std::uint64_t capture_ns, std::uint64_t now_ns,
+                          std::uint8_t flags) noexcept {
+  const Result<std::size_t> encoded = encode_message(reply_, payload_, sizeof payload_);
+  if (!encoded.ok()) return;
+  const Result<std::size_t> sealed = sealer.seal(payload_, encoded.value(), now_ns, capture_ns,
+                                                 outgoing_, sizeof outgoing_, flags);
+  if (sealed.ok()) (void)port_.send(outgoing_, sealed.value());
+}
+
+LinkBlock ControllerLink::block(std::uint64_t now_ns) const noexcept {
+  if (latch_.latched()) return LinkBlock::kLatched;
+  if (stop_requested_) return LinkBlock::kStopRequested;
+  if (!session_up_) return LinkBlock::kNoSession;
+  if (assembler_.version() == 0) return LinkBlock::kNoMap;
+  if (now_ns < map_applied_ns_ || now_ns - map_applied_ns_ > config_.watchdog_ns) {
+    return LinkBlock::kMapTooOld;
+  }
+  return LinkBlock::kNone;
+}
+
+void ControllerLink::acknowledge() noexcept {
+  latch_.acknowledge();
+  stop_requested_ = false;
+  stop_cause_ = safecell_v1_FaultCause_FAULT_CAUSE_UNSPECIFIED;
+}
+
+}  // namespace safecell

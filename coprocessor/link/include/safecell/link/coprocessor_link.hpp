@@ -1,0 +1,105 @@
+#pragma once
+// The coprocessor's end of the link: opens the session (handshake), keeps the clock offset to the
+// controller (ClockEcho), sends each cycle's map update and takes in the joint stream with its
+// acknowledgements.
+//
+// Clocks: the controller's clock is the link's reference. Frames to the controller carry times
+// converted into it (ClockSync), and the joint stream's times are the controller's own, so both
+// ends check data age against one clock; `now` here is the coprocessor's steady clock (or the
+// one a test injects).
+// Thread context: one link thread; not synchronised.
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "safecell/link/clock_sync.hpp"
+#include "safecell/link/datagram_transport.hpp"
+#include "safecell/link/map_publisher.hpp"
+#include "safecell/protocol/error_latch.hpp"
+#include "safecell/protocol/frame_checker.hpp"
+#include "safecell/v1/message.pb.h"
+
+namespace safecell {
+
+struct CoprocessorLinkConfig {
+  std::uint32_t cell_count = 0;  // of the grid the maps are cells of
+  std::uint32_t coprocessor_id = 1;
+  std::uint32_t controller_id = 2;
+  std::uint64_t grid_fingerprint = 0;
+  std::uint64_t lut_fingerprint = 0;
+  std::uint32_t map_cycle_us = 33'333;
+  std::uint32_t control_cycle_us = 4'000;
+  std::uint32_t watchdog_us = 100'000;
+  std::uint32_t max_data_age_us = 150'000;
+  std::uint32_t max_clock_lead_us = 5'000;
+  MapPublisherSettings publisher;
+  std::uint32_t echo_samples = 8;  // echoes at session start
+  std::uint64_t latch_window_ns = kDefaultLatchWindowNs;
+};
+
+// The last joint state the controller sent, with its time in the coprocessor's clock.
+struct ReceivedJointState {
+  v1::JointState state;
+  std::uint64_t coprocessor_time_ns = 0;
+};
+
+class CoprocessorLink {
+ public:
+  using Clock = std::function<std::uint64_t()>;  // ns, monotonic
+
+  // session_id: random per start (0 draws one). clock: the coprocessor's; steady_clock if empty.
+  CoprocessorLink(const CoprocessorLinkConfig& config, DatagramTransport& transport,
+                  std::uint64_t session_id = 0, Clock clock = {});
+
+  // Handshake, then config.echo_samples clock echoes. Throws LinkSetupError when the controller
+  // refuses (naming what differs) or does not answer within `timeout`.
+  void open(std::chrono::milliseconds timeout);
+
+  // Sends this cycle's map, its data captured at `capture_ns` (coprocessor clock).
+  MapUpdate send_map(const CellSet& map, std::uint64_t capture_ns, std::uint32_t healthy_cameras,
+                     std::uint32_t camera_count);
+  // Sends one clock echo request (call now and then: drift).
+  void send_clock_echo();
+
+  // Handles what arrives within `wait` (returns early after the first datagram when `wait` is 0).
+  void poll(std::chrono::microseconds wait);
+
+  std::uint64_t session_id() const { return session_id_; }
+  const ClockSync& clock_sync() const { return clock_sync_; }
+  const MapPublisher& publisher() const { return publisher_; }
+  const ErrorLatch& latch() const { return latch_; }
+  const std::optional<ReceivedJointState>& last_joint_state() const { return last_joint_state_; }
+  // Faults the controller reported, in order.
+  const std::vector<v1::FaultReport>& controller_faults() const { return controller_faults_; }
+
+ private:
+  std::uint64_t now() const { return clock_(); }
+  void send_message(const v1::Message& message, std::uint64_t capture_controller_ns,
+                    std::uint8_t flags = 0);
+  // Handles one datagram; true when it was a valid frame of the session.
+  bool handle(std::span<const std::uint8_t> datagram);
+  void handle_handshake_answer(const FrameView& frame);
+
+  CoprocessorLinkConfig config_;
+  DatagramTransport& transport_;
+  Clock clock_;
+  std::uint64_t session_id_;
+  std::uint64_t fingerprint_;
+  FrameSealer sealer_;
+  FrameChecker checker_;
+  ClockSync clock_sync_;
+  MapPublisher publisher_;
+  ErrorLatch latch_;
+  bool accepted_ = false;
+  std::optional<std::string> refused_because_;
+  std::uint32_t next_echo_id_ = 1;
+  std::optional<ReceivedJointState> last_joint_state_;
+  std::vector<v1::FaultReport> controller_faults_;
+  std::vector<std::uint8_t> buffer_;
+};
+
+}  // namespace safecell

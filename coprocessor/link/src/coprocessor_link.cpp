@@ -1,0 +1,237 @@
+#include "safecell/link/coprocessor_link.hpp"
+
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include "safecell/link/link_errors.hpp"
+
+namespace safecell {
+namespace {
+
+std::uint64_t steady_now_ns() {
+  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                        std::chrono::steady_clock::now().time_since_epoch())
+                                        .count());
+}
+
+std::uint64_t random_session_id() {
+  std::random_device device;
+  std::uint64_t id = 0;
+  while (id == 0) id = (std::uint64_t{device()} << 32) ^ device();
+  return id;
+}
+
+// Until the clock is synced, the controller's times cannot be compared with ours.
+constexpr ArrivalLimits kUnsyncedLimits{std::numeric_limits<std::uint64_t>::max() / 2,
+                                        std::numeric_limits<std::uint64_t>::max() / 2,
+                                        std::numeric_limits<std::uint64_t>::max() / 2};
+
+std::string hex(std::uint64_t value) {
+  std::ostringstream text;
+  text << "0x" << std::hex << value;
+  return text.str();
+}
+
+}  // namespace
+
+CoprocessorLink::CoprocessorLink(const CoprocessorLinkConfig& config, DatagramTransport& transport,
+                                 std::uint64_t session_id, Clock clock)
+    : config_(config),
+      transport_(transport),
+      clock_(clock ? std::move(clock) : Clock(steady_now_ns)),
+      session_id_(session_id != 0 ? session_id : random_session_id()),
+      fingerprint_(configuration_fingerprint(config.grid_fingerprint, config.lut_fingerprint)),
+      sealer_({config.coprocessor_id, config.controller_id, session_id_, fingerprint_}),
+      checker_({config.coprocessor_id, config.controller_id, session_id_, fingerprint_},
+               kUnsyncedLimits, 0),
+      publisher_(config.cell_count, config.publisher),
+      latch_(config.latch_window_ns),
+      buffer_(kMaxFrameBytes + 1) {}
+
+void CoprocessorLink::send_message(const v1::Message& message, std::uint64_t capture_controller_ns,
+                                   std::uint8_t flags) {
+  const std::string payload = message.SerializeAsString();
+  const std::uint64_t send_ns = clock_sync_.offset() ? clock_sync_.to_controller(now()) : 0;
+  std::vector<std::uint8_t> frame(kMaxFrameBytes);
+  const Result<std::size_t> size =
+      sealer_.seal(reinterpret_cast<const std::uint8_t*>(payload.data()), payload.size(), send_ns,
+                   capture_controller_ns, frame.data(), frame.size(), flags);
+  if (!size.ok()) {
+    throw std::logic_error(std::string("link: a message does not fit one frame (") +
+                           to_string(size.error()) + ")");
+  }
+  (void)transport_.send({frame.data(), size.value()});
+}
+
+void CoprocessorLink::open(std::chrono::milliseconds timeout) {
+  const std::uint64_t deadline = now() + static_cast<std::uint64_t>(timeout.count()) * 1'000'000;
+  v1::Message hello;
+  v1::Handshake& handshake = *hello.mutable_handshake();
+  handshake.set_protocol_version(kProtocolVersion);
+  handshake.set_session_id(session_id_);
+  handshake.set_source_id(config_.coprocessor_id);
+  handshake.set_destination_id(config_.controller_id);
+  handshake.set_grid_fingerprint(config_.grid_fingerprint);
+  handshake.set_lut_fingerprint(config_.lut_fingerprint);
+  handshake.set_map_cycle_us(config_.map_cycle_us);
+  handshake.set_control_cycle_us(config_.control_cycle_us);
+  handshake.set_watchdog_us(config_.watchdog_us);
+  handshake.set_max_data_age_us(config_.max_data_age_us);
+  handshake.set_keyframe_after_cycles(config_.publisher.keyframe_after_cycles);
+  while (!accepted_) {
+    if (now() > deadline) {
+      throw LinkSetupError("link: the controller (id " + std::to_string(config_.controller_id) +
+                           ") did not answer the handshake within " +
+                           std::to_string(timeout.count()) + " ms");
+    }
+    send_message(hello, 0, kFrameFlagHandshake);
+    const std::uint64_t resend_at = now() + 200'000'000;
+    while (!accepted_ && !refused_because_ && now() < resend_at) {
+      poll(std::chrono::milliseconds(20));
+    }
+    if (refused_because_) throw LinkSetupError(*refused_because_);
+  }
+  // The clock offset, before any map: map times are the controller's.
+  for (std::uint32_t echo = 0; echo < config_.echo_samples && now() < deadline; ++echo) {
+    const std::size_t before = clock_sync_.samples();
+    send_clock_echo();
+    const std::uint64_t give_up = now() + 100'000'000;
+    while (clock_sync_.samples() == before && now() < give_up) poll(std::chrono::milliseconds(5));
+  }
+  if (!clock_sync_.offset()) {
+    throw LinkSetupError("link: the controller accepted the session but answered no clock echo");
+  }
+  checker_.set_limits(
+      {std::uint64_t{config_.max_data_age_us} * 1000,
+       std::uint64_t{config_.max_clock_lead_us} * 1000 + clock_sync_.offset()->uncertainty_ns,
+       std::uint64_t{config_.watchdog_us} * 1000});
+}
+
+void CoprocessorLink::send_clock_echo() {
+  v1::Message message;
+  message.mutable_clock_echo()->set_echo_id(next_echo_id_++);
+  message.mutable_clock_echo()->set_request_sent_ns(now());
+  send_message(message, 0);
+}
+
+MapUpdate CoprocessorLink::send_map(const CellSet& map, std::uint64_t capture_ns,
+                                    std::uint32_t healthy_cameras, std::uint32_t camera_count) {
+  if (!clock_sync_.offset()) throw std::logic_error("link: send_map before open()");
+  MapUpdate update = publisher_.publish(map, healthy_cameras, camera_count);
+  const std::uint64_t capture_controller_ns = clock_sync_.to_controller(capture_ns);
+  v1::Message message;
+  for (const v1::MapChunk& chunk : update.chunks) {
+    *message.mutable_map_chunk() = chunk;
+    send_message(message, capture_controller_ns);
+  }
+  return update;
+}
+
+void CoprocessorLink::poll(std::chrono::microseconds wait) {
+  const auto until = std::chrono::steady_clock::now() + wait;
+  do {
+    const auto left = std::chrono::duration_cast<std::chrono::microseconds>(
+        until - std::chrono::steady_clock::now());
+    const auto size = transport_.receive(buffer_, std::max(left, std::chrono::microseconds(0)));
+    if (!size) return;
+    (void)handle({buffer_.data(), std::min(*size, buffer_.size())});
+  } while (std::chrono::steady_clock::now() < until);
+}
+
+void CoprocessorLink::handle_handshake_answer(const FrameView& frame) {
+  v1::Message message;
+  if (frame.header.session_id != session_id_ || frame.header.source_id != config_.controller_id ||
+      frame.header.destination_id != config_.coprocessor_id ||
+      !message.ParseFromArray(frame.payload, static_cast<int>(frame.payload_size)) ||
+      !message.has_handshake()) {
+    (void)latch_.record({LinkError::kMasquerade, frame.header.session_id}, now());
+    return;
+  }
+  const v1::Handshake& answer = message.handshake();
+  if (answer.accepted()) {
+    accepted_ = true;
+    checker_ =
+        FrameChecker({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_},
+                     kUnsyncedLimits, now(), frame.header.sequence);
+    return;
+  }
+  std::string why = "link: the controller refused the session:";
+  if (answer.protocol_version() != kProtocolVersion) {
+    why += " it speaks protocol version " + std::to_string(answer.protocol_version()) +
+           ", this coprocessor " + std::to_string(kProtocolVersion) + ";";
+  }
+  if (answer.grid_fingerprint() != config_.grid_fingerprint) {
+    why += " its grid fingerprint is " + hex(answer.grid_fingerprint()) + ", ours " +
+           hex(config_.grid_fingerprint) + " (the cell's grid differs: m_max, joints, ranges);";
+  }
+  if (answer.lut_fingerprint() != config_.lut_fingerprint) {
+    why += " its LUT fingerprint is " + hex(answer.lut_fingerprint()) + ", ours " +
+           hex(config_.lut_fingerprint) + " (recommission the controller with these LUTs);";
+  }
+  refused_because_ = why;
+}
+
+bool CoprocessorLink::handle(std::span<const std::uint8_t> datagram) {
+  const std::uint64_t arrival = now();
+  const Result<FrameView, LinkFault> opened =
+      open_frame(datagram.data(), datagram.size(), fingerprint_);
+  if (!opened.ok()) {
+    (void)latch_.record(opened.error(), arrival);
+    return false;
+  }
+  if (opened.value().is_handshake()) {
+    handle_handshake_answer(opened.value());
+    return false;
+  }
+  if (!accepted_) {
+    (void)latch_.record({LinkError::kMasquerade, opened.value().header.session_id}, arrival);
+    return false;
+  }
+  const std::uint64_t now_controller =
+      clock_sync_.offset() ? clock_sync_.to_controller(arrival) : arrival;
+  const Result<AcceptedFrame, LinkFault> accepted =
+      checker_.check_opened(opened.value(), now_controller);
+  if (!accepted.ok()) {
+    (void)latch_.record(accepted.error(), arrival);
+    return false;
+  }
+  if (accepted.value().lost > 0) {
+    (void)latch_.record({LinkError::kLoss, accepted.value().lost}, arrival);
+  }
+  const FrameView& frame = accepted.value().frame;
+  v1::Message message;
+  if (!message.ParseFromArray(frame.payload, static_cast<int>(frame.payload_size))) {
+    (void)latch_.record({LinkError::kCorruption, frame.header.sequence}, arrival);
+    return false;
+  }
+  switch (message.body_case()) {
+    case v1::Message::kJointState: {
+      publisher_.acknowledge(message.joint_state().applied_map_version());
+      ReceivedJointState received{message.joint_state(), 0};
+      if (clock_sync_.offset()) {
+        received.coprocessor_time_ns =
+            clock_sync_.to_coprocessor(message.joint_state().controller_time_ns());
+      }
+      last_joint_state_ = std::move(received);
+      break;
+    }
+    case v1::Message::kClockEcho: {
+      const v1::ClockEcho& echo = message.clock_echo();
+      (void)clock_sync_.add(
+          {echo.request_sent_ns(), echo.request_received_ns(), echo.reply_sent_ns(), arrival});
+      break;
+    }
+    case v1::Message::kKeyframeRequest:
+      publisher_.request_keyframe();
+      break;
+    case v1::Message::kFaultReport:
+      controller_faults_.push_back(message.fault_report());
+      break;
+    default:
+      break;
+  }
+  return true;
+}
+
+}  // namespace safecell
