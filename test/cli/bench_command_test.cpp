@@ -15,7 +15,8 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   for (const char* key :
        {"features_ms", "features_worst_ms", "sim_render_ms", "sim_render_worst_ms", "fusion_ms",
         "fusion_worst_ms", "fusion_baseline_ms", "fusion_speedup", "lut_bytes_per_camera",
-        "lut_build_s"}) {
+        "lut_build_s", "frame_encode_us", "frame_check_us", "crc_mb_s", "delta_bytes_p50",
+        "delta_bytes_p99", "keyframe_bytes", "delta_encode_us"}) {
     ASSERT_TRUE(report.contains(key)) << key;
     EXPECT_GT(report[key].get<double>(), 0.0) << key;
   }
@@ -28,6 +29,10 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   EXPECT_GT(fusion["obstacle_pixels"].get<double>(), 0.0);
   EXPECT_GT(fusion["forbidden_cells"].get<double>(), fusion["static_cells"].get<double>());
   EXPECT_LE(report["lut_bytes_per_camera"].get<double>(), 5e6);
+  // Map updates: a delta is at least one frame's header and CRC; the person changes the map.
+  EXPECT_GE(report["delta_bytes_p50"].get<double>(), 48.0);
+  EXPECT_GE(report["delta_bytes_p99"].get<double>(), report["delta_bytes_p50"].get<double>());
+  EXPECT_GE(report["keyframe_bytes"].get<double>(), 48.0);
 }
 
 }  // namespace

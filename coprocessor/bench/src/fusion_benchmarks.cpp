@@ -7,17 +7,14 @@
 // reported as counters (lut_build_s, lut_bytes_per_camera).
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <random>
 
+#include "default_cell_tables.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
-#include "safecell/cell/cell_grid.hpp"
-#include "safecell/cell/default_cell.hpp"
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
-#include "safecell/lut/model_luts.hpp"
 #include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 
@@ -25,20 +22,17 @@ namespace safecell {
 namespace {
 
 struct FusionSetUp {
-  CellModel cell = load_cell_model(default_cell());
-  CspaceGrid grid = make_grid(cell.config);
-  double build_s = 0.0;
-  LutSet luts;
-  ModelSilhouettes silhouettes{cell, grid, ModelLutOptions{}};
+  const DefaultCellTables& tables = default_cell_tables();
+  const CellModel& cell = tables.cell;
+  const CspaceGrid& grid = tables.grid;
+  const double build_s = tables.build_s;
+  const LutSet& luts = tables.luts;
+  const ModelSilhouettes& silhouettes = tables.silhouettes;
   CellIndex robot_cell = 0;
   std::vector<CameraObservation> typical;         // the robot and a human near it
   std::vector<CameraObservation> thirty_percent;  // 30 % of every mask blocked
 
   FusionSetUp() {
-    const auto start = std::chrono::steady_clock::now();
-    luts = build_model_luts(cell, grid);
-    build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
     const std::vector<double> q{0.6, 0.3, 0.8, 0.0, 0.5, 0.0};
     JointAngles angles;
     for (std::size_t j = 0; j < q.size(); ++j) angles.rad[j] = q[j];

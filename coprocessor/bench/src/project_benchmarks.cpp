@@ -7,6 +7,7 @@ namespace safecell {
 
 void register_feature_benchmarks();  // feature_benchmarks.cpp
 void register_fusion_benchmarks();   // fusion_benchmarks.cpp
+void register_link_benchmarks();     // link_benchmarks.cpp
 void register_render_benchmarks();   // render_benchmarks.cpp
 
 namespace {
@@ -80,6 +81,7 @@ void register_project_benchmarks() {
   static const bool registered = [] {
     register_feature_benchmarks();
     register_fusion_benchmarks();
+    register_link_benchmarks();
     register_render_benchmarks();
     return true;
   }();

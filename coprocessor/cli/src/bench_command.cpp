@@ -32,6 +32,21 @@ struct NamedCounter {
 constexpr NamedCounter kNamedCounters[] = {
     {"fusion_typical_scene", "lut_bytes_per_camera", "lut_bytes_per_camera"},
     {"fusion_typical_scene", "lut_build_s", "lut_build_s"},
+    {"map_updates_of_demo_sequence", "delta_bytes_p50", "delta_bytes_p50"},
+    {"map_updates_of_demo_sequence", "delta_bytes_p99", "delta_bytes_p99"},
+    {"map_updates_of_demo_sequence", "delta_bytes_max", "delta_bytes_max"},
+    {"map_updates_of_demo_sequence", "keyframe_bytes", "keyframe_bytes"},
+};
+
+// Figures of the link stated in microseconds: the median of a benchmark.
+struct NamedMicroseconds {
+  const char* benchmark;
+  const char* key;
+};
+constexpr NamedMicroseconds kNamedMicroseconds[] = {
+    {"frame_seal_full_size", "frame_encode_us"},
+    {"frame_check_full_size", "frame_check_us"},
+    {"map_updates_of_demo_sequence", "delta_encode_us"},
 };
 
 }  // namespace
@@ -72,6 +87,19 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
       if (figure.name == named.benchmark && counter != figure.counters.end()) {
         report[named.key] = counter->second;
       }
+    }
+  }
+  for (const auto& named : kNamedMicroseconds) {
+    for (const auto& figure : figures) {
+      if (figure.name == named.benchmark) report[named.key] = figure.median_ms * 1e3;
+    }
+  }
+  // The safety CRC's throughput over a full frame's bytes, from its median time.
+  for (const auto& figure : figures) {
+    const auto bytes = figure.counters.find("bytes");
+    if (figure.name == "safety_crc32_full_frame" && bytes != figure.counters.end() &&
+        figure.median_ms > 0.0) {
+      report["crc_mb_s"] = bytes->second / (figure.median_ms * 1e-3) / 1e6;
     }
   }
   // The ratio the fusion target is stated in: baseline time over fast time, in the same run.

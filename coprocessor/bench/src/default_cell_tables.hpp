@@ -1,0 +1,24 @@
+#pragma once
+// The default cell with its model-mode tables, built once per process (before any timing) and
+// shared by the fusion and link benchmarks.
+
+#include "safecell/cell/cell_model.hpp"
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/lut/lut_set.hpp"
+#include "safecell/lut/model_silhouettes.hpp"
+
+namespace safecell {
+
+struct DefaultCellTables {
+  CellModel cell;
+  CspaceGrid grid;
+  double build_s = 0.0;  // to build the tables
+  LutSet luts;
+  ModelSilhouettes silhouettes;
+
+  DefaultCellTables();
+};
+
+const DefaultCellTables& default_cell_tables();
+
+}  // namespace safecell

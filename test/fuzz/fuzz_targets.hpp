@@ -1,0 +1,29 @@
+#pragma once
+// The libFuzzer targets of the link's hostile-input paths. Each is a plain function here so that
+// test_fuzz_corpus replays the kept corpora with the normal tests; the fuzz preset builds each
+// into a libFuzzer program (SAFECELL_FUZZ_ENTRY selects the one). A target returns 0 and aborts
+// (SAFECELL_ASSERT, or a sanitizer) when an invariant breaks.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace safecell::fuzz {
+
+// The safety layer's receiving checks on any datagram.
+int frame_checker(const std::uint8_t* data, std::size_t size);
+// The controller's nanopb decode of any payload, and the re-encoding of what it accepts.
+int nanopb_decode(const std::uint8_t* data, std::size_t size);
+// Map chunks (keyframes, deltas, any header) applied by the controller's assembler.
+int map_chunk_apply(const std::uint8_t* data, std::size_t size);
+
+}  // namespace safecell::fuzz
+
+// Defines LLVMFuzzerTestOneInput for `target` in the libFuzzer build of its file.
+#ifdef SAFECELL_FUZZ_ENTRY
+#define SAFECELL_FUZZ_ENTRY_POINT(target)                                             \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { \
+    return safecell::fuzz::target(data, size);                                        \
+  }
+#else
+#define SAFECELL_FUZZ_ENTRY_POINT(target)
+#endif
