@@ -5,32 +5,37 @@
 # helpers), or is one of the four memory functions GCC may emit even under -ffreestanding.
 cmake_minimum_required(VERSION 3.25)
 
+# symbols_of(<archive> <--defined-only|--undefined-only> <out>): the symbol names nm lists.
+function(symbols_of archive which out)
+  execute_process(COMMAND ${NM} ${which} --demangle ${archive}
+                  OUTPUT_VARIABLE listing RESULT_VARIABLE failed)
+  if(failed)
+    message(FATAL_ERROR "${NM} failed on ${archive}")
+  endif()
+  # Lines are "<address> <type> <name>" (defined) or "<spaces> U <name>" (undefined).
+  string(REPLACE ";" "\\;" listing "${listing}")
+  string(REPLACE "\n" ";" lines "${listing}")
+  set(names "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^[0-9a-fA-F ]* [A-Za-z] (.+)$")
+      list(APPEND names "${CMAKE_MATCH_1}")
+    endif()
+  endforeach()
+  set(${out} "${names}" PARENT_SCOPE)
+endfunction()
+
 # Every symbol the libraries define themselves (one library may call another: the nanopb runtime,
 # the generated message descriptors).
 set(defined "")
 foreach(archive IN LISTS ARCHIVES)
-  execute_process(COMMAND ${NM} --defined-only --demangle ${archive}
-                  OUTPUT_VARIABLE listing RESULT_VARIABLE failed)
-  if(failed)
-    message(FATAL_ERROR "${NM} failed on ${archive}")
-  endif()
-  string(REGEX MATCHALL "[0-9a-f]+ [A-Za-z] [^\n]+" symbols "${listing}")
-  foreach(entry IN LISTS symbols)
-    string(REGEX REPLACE "^[0-9a-f]+ [A-Za-z] " "" symbol "${entry}")
-    list(APPEND defined "${symbol}")
-  endforeach()
+  symbols_of(${archive} --defined-only names)
+  list(APPEND defined ${names})
 endforeach()
 
 set(undefined "")
 foreach(archive IN LISTS ARCHIVES)
-  execute_process(COMMAND ${NM} --undefined-only --demangle ${archive}
-                  OUTPUT_VARIABLE listing RESULT_VARIABLE failed)
-  if(failed)
-    message(FATAL_ERROR "${NM} failed on ${archive}")
-  endif()
-  string(REGEX MATCHALL "U [^\n]+" symbols "${listing}")
-  foreach(entry IN LISTS symbols)
-    string(SUBSTRING "${entry}" 2 -1 symbol)
+  symbols_of(${archive} --undefined-only names)
+  foreach(symbol IN LISTS names)
     if(symbol IN_LIST defined)
       continue()
     endif()

@@ -7,19 +7,17 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "default_cell_tables.hpp"
 #include "safecell/base/crc32.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/link/map_publisher.hpp"
-#include "safecell/pipeline/sensing_pipeline.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/protocol/frame_checker.hpp"
-#include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/demo_scenario.hpp"
 #include "safecell/v1/message.pb.h"
+#include "safecell/validation/demo_maps.hpp"
+#include "safecell/validation/percentile.hpp"
 
 namespace safecell {
 namespace {
@@ -69,21 +67,8 @@ void safety_crc32_full_frame(benchmark::State& state) {
 const std::vector<CellSet>& demo_maps() {
   static const std::vector<CellSet> maps = [] {
     const DefaultCellTables& tables = default_cell_tables();
-    SimulatedCell sim = simulate_cell(tables.cell, SensorSettings{});
-    const SimulatedReference reference = simulated_reference(sim, tables.cell, 9, 1);
-    FusionSettings fusion;
-    fusion.camera_threshold = tables.cell.camera_threshold;
-    SensingPipeline pipeline(tables.cell, tables.grid, tables.luts, tables.silhouettes,
-                             reference.frames, {}, fusion);
-    const HumanWalker person = demo_person(tables.cell);
-    std::vector<CellSet> out;
-    for (int cycle = 0; cycle < 30; ++cycle) {
-      const double time_s = kDemoHumanEnters_s + cycle / 30.0;
-      const SimScene scene = demo_scene(tables.grid, person, time_s);
-      out.push_back(
-          pipeline.process(sim.render(scene, static_cast<std::size_t>(cycle), time_s), scene.q));
-    }
-    return out;
+    return demo_map_sequence(tables.cell, tables.grid, tables.luts, tables.silhouettes,
+                             kDemoHumanEnters_s, 30);
   }();
   return maps;
 }
@@ -96,11 +81,6 @@ double wire_bytes(const MapUpdate& update) {
     bytes += static_cast<double>(message.ByteSizeLong() + kFrameOverheadBytes);
   }
   return bytes;
-}
-
-double percentile(std::vector<double> values, double q) {
-  std::sort(values.begin(), values.end());
-  return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
 }
 
 // One timed unit: publishing (encoding) the next map of the sequence as a delta.
