@@ -2,11 +2,15 @@
 // within its error bound of the true motion, between samples and ahead of the last one.
 
 #include "safecell/link/joint_buffer.hpp"
+#include "safecell/link/robot_pose_at_exposure.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/cell/cell_model.hpp"
+#include "safecell/cell/default_cell.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {
@@ -89,6 +93,28 @@ TEST(JointBuffer, RefusesMeaninglessLimitsAndSamples) {
   limits.max_acceleration_rad_s2 = {1.0, 1.0};
   JointBuffer buffer(limits);
   EXPECT_THROW((void)buffer.add(1, 0, {0.0}, {0.0}), std::invalid_argument);
+}
+
+// The pose for removal: known while its error fits the timing allowance, unknown (and the cycle
+// stops) when it does not, or when the joints are stale.
+TEST(RobotPoseAtExposure, UsableOnlyWithinTheRemovalsTimingAllowance) {
+  const CspaceGrid grid = make_grid(load_cell_model(default_cell()).config);
+  JointBufferLimits limits;
+  limits.max_acceleration_rad_s2.assign(grid.joint_count(), 5.0);
+  JointBuffer buffer(limits);
+  const std::vector<double> still(grid.joint_count(), 0.1);
+  const std::vector<double> moving(grid.joint_count(), 1.0);
+  ASSERT_TRUE(buffer.add(100 * kMs, 100'000, still, moving));
+  ASSERT_TRUE(buffer.add(104 * kMs, 100'000, still, moving));
+  const RobotPoseAtExposure close = robot_pose_at_exposure(buffer, 104 * kMs, grid, 0.05);
+  ASSERT_TRUE(close.known) << close.unknown_because;
+  EXPECT_GT(close.error_m, 0.0);
+  // 15 ms ahead: the extrapolation's error grows past a 1 mm allowance.
+  const RobotPoseAtExposure ahead = robot_pose_at_exposure(buffer, 119 * kMs, grid, 0.001);
+  EXPECT_FALSE(ahead.known);
+  EXPECT_NE(ahead.unknown_because.find("over the removal's timing allowance"), std::string::npos)
+      << ahead.unknown_because;
+  EXPECT_FALSE(robot_pose_at_exposure(buffer, 400 * kMs, grid, 1.0).known);  // stale joints
 }
 
 }  // namespace

@@ -24,6 +24,8 @@ const char* to_string(CameraFault fault) {
       return "camera stopped delivering";
     case CameraFault::kCorruptFrame:
       return "corrupt frame";
+    case CameraFault::kOutOfSync:
+      return "exposure out of sync";
   }
   return "unknown fault";
 }

@@ -16,6 +16,7 @@ enum class CameraFault {
   kUnavailable,     // the camera (device, file, folder, stream) could not be opened
   kStopped,         // the camera was open but delivered no frame when asked
   kCorruptFrame,    // the frame could not be decoded (a truncated or garbage image file)
+  kOutOfSync,       // exposed too far from the other cameras of its frame set
 };
 
 const char* to_string(CameraFault fault);
