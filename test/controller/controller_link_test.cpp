@@ -1,0 +1,235 @@
+// The controller's end of the link alone, on the controller's own code only (nanopb, the safety
+// layer, the assembler), so it also runs under qemu-aarch64: a scripted coprocessor opens a
+// session, sends a keyframe and deltas, and misbehaves; the link takes what is right, refuses
+// what is not, and says whether the robot may move.
+
+#include "safecell/controller/controller_link.hpp"
+
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <vector>
+
+#include "safecell/cspace/cell_bits.hpp"
+#include "safecell/cspace/map_hash.hpp"
+#include "safecell/protocol/nanopb_codec.hpp"
+
+namespace safecell {
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+constexpr std::uint64_t kMs = 1'000'000;
+constexpr CellIndex kCells = 5000;
+constexpr std::uint64_t kGrid = 0x6121D;
+constexpr std::uint64_t kLuts = 0x1075;
+constexpr std::uint64_t kSession = 0xC0FFEE;
+
+// Datagrams in memory: what the test puts in, the link receives; what the link sends, the test
+// reads.
+class MemoryPort final : public LinkPort {
+ public:
+  bool send(const std::uint8_t* data, std::size_t size) noexcept override {
+    sent.emplace_back(data, data + size);
+    return true;
+  }
+  std::size_t receive(std::uint8_t* buffer, std::size_t capacity) noexcept override {
+    if (inbox.empty()) return 0;
+    const Bytes next = inbox.front();
+    inbox.pop_front();
+    if (next.size() > capacity) return capacity + 1;
+    for (std::size_t i = 0; i < next.size(); ++i) buffer[i] = next[i];
+    return next.size();
+  }
+  std::deque<Bytes> inbox;
+  std::vector<Bytes> sent;
+};
+
+// The coprocessor's side, scripted with the controller's own encoder.
+class ScriptedCoprocessor {
+ public:
+  explicit ScriptedCoprocessor(std::uint64_t lut_fingerprint = kLuts)
+      : lut_(lut_fingerprint),
+        sealer_({1, 2, kSession, configuration_fingerprint(kGrid, lut_fingerprint)}) {}
+
+  Bytes handshake(std::uint64_t now) {
+    message_ = safecell_v1_Message_init_zero;
+    message_.which_body = safecell_v1_Message_handshake_tag;
+    message_.body.handshake.protocol_version = kProtocolVersion;
+    message_.body.handshake.session_id = kSession;
+    message_.body.handshake.grid_fingerprint = kGrid;
+    message_.body.handshake.lut_fingerprint = lut_;
+    return seal(now, 0, kFrameFlagHandshake);
+  }
+  // One chunk holding the whole update (5000 cells fit one frame).
+  Bytes update(const std::vector<std::uint64_t>* base, std::uint64_t base_version,
+               const std::vector<std::uint64_t>& target, std::uint64_t version,
+               std::uint64_t capture, std::uint64_t now) {
+    message_ = safecell_v1_Message_init_zero;
+    message_.which_body = safecell_v1_Message_map_chunk_tag;
+    safecell_v1_MapChunk& chunk = message_.body.map_chunk;
+    chunk.kind = base ? safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
+                      : safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
+    chunk.map_version = version;
+    chunk.base_version = base ? base_version : 0;
+    chunk.map_hash = map_hash(target.data(), kCells);
+    chunk.chunk_count = 1;
+    chunk.end_cell = kCells;
+    std::size_t size = 0;
+    const CellIndex end = base ? encode_delta_chunk(base->data(), target.data(), kCells, 0,
+                                                    chunk.runs.bytes, sizeof chunk.runs.bytes, size)
+                               : encode_keyframe_chunk(target.data(), kCells, 0, chunk.runs.bytes,
+                                                       sizeof chunk.runs.bytes, size);
+    EXPECT_EQ(end, kCells);
+    chunk.runs.size = static_cast<pb_size_t>(size);
+    return seal(now, capture);
+  }
+
+ private:
+  Bytes seal(std::uint64_t now, std::uint64_t capture, std::uint8_t flags = 0) {
+    std::uint8_t payload[kMaxPayloadBytes];
+    const Result<std::size_t> encoded = encode_message(message_, payload, sizeof payload);
+    EXPECT_TRUE(encoded.ok());
+    Bytes frame(kMaxFrameBytes);
+    const Result<std::size_t> size =
+        sealer_.seal(payload, encoded.value_or(0), now, capture, frame.data(), frame.size(), flags);
+    EXPECT_TRUE(size.ok());
+    frame.resize(size.value_or(0));
+    return frame;
+  }
+
+  std::uint64_t lut_;
+  FrameSealer sealer_;
+  safecell_v1_Message message_{};
+};
+
+class ControllerLinkTest : public ::testing::Test {
+ protected:
+  ControllerLinkTest()
+      : words_{std::vector<std::uint64_t>(cell_bits::words_for(kCells)),
+               std::vector<std::uint64_t>(cell_bits::words_for(kCells))},
+        hashes_{std::vector<std::uint64_t>(map_hash_blocks(kCells)),
+                std::vector<std::uint64_t>(map_hash_blocks(kCells))},
+        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
+                   kCells),
+        link_(config(), port_, assembler_) {}
+
+  static ControllerLinkConfig config() {
+    ControllerLinkConfig c;
+    c.grid_fingerprint = kGrid;
+    c.lut_fingerprint = kLuts;
+    return c;
+  }
+  static std::vector<std::uint64_t> map_with(CellIndex begin, CellIndex end) {
+    std::vector<std::uint64_t> words(cell_bits::words_for(kCells), 0);
+    cell_bits::set_range(words.data(), begin, end);
+    return words;
+  }
+  void deliver(const Bytes& frame, std::uint64_t now) {
+    port_.inbox.push_back(frame);
+    link_.poll(now);
+  }
+  std::vector<std::uint64_t> held() const {
+    return {assembler_.map(), assembler_.map() + cell_bits::words_for(kCells)};
+  }
+  // The last message the link sent, decoded.
+  safecell_v1_Message last_sent() {
+    const Bytes& frame = port_.sent.back();
+    const auto opened =
+        open_frame(frame.data(), frame.size(), configuration_fingerprint(kGrid, kLuts));
+    EXPECT_TRUE(opened.ok());
+    safecell_v1_Message message = safecell_v1_Message_init_zero;
+    EXPECT_EQ(decode_message(opened.value().payload, opened.value().payload_size, message),
+              Status::kOk);
+    return message;
+  }
+
+  std::vector<std::uint64_t> words_[2];
+  std::vector<std::uint64_t> hashes_[2];
+  MapAssembler assembler_;
+  MemoryPort port_;
+  ControllerLink link_;
+  ScriptedCoprocessor coprocessor_;
+};
+
+TEST_F(ControllerLinkTest, NoMotionUntilASessionAndAVerifiedKeyframe) {
+  EXPECT_EQ(link_.block(0), LinkBlock::kNoSession);
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  ASSERT_TRUE(link_.session_up());
+  EXPECT_TRUE(last_sent().body.handshake.accepted);
+  EXPECT_EQ(link_.block(11 * kMs), LinkBlock::kNoMap);
+  const auto first = map_with(100, 900);
+  deliver(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  EXPECT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
+  EXPECT_EQ(held(), first);
+  EXPECT_EQ(link_.map_capture_ns(), 19 * kMs);
+  // A delta on top; then silence beyond T_wd (100 ms) blocks motion.
+  const auto second = map_with(150, 950);
+  deliver(coprocessor_.update(&first, 1, second, 2, 29 * kMs, 30 * kMs), 31 * kMs);
+  EXPECT_EQ(held(), second);
+  EXPECT_EQ(link_.block(131 * kMs), LinkBlock::kNone);
+  EXPECT_EQ(link_.block(132 * kMs), LinkBlock::kMapTooOld);
+}
+
+TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  deliver(coprocessor_.update(nullptr, 0, map_with(0, 10), 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  JointSample joints;
+  joints.joint_count = 6;
+  joints.position_rad[2] = 0.5;
+  joints.read_time_ns = 22 * kMs;
+  link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0,
+                         22 * kMs);
+  const safecell_v1_Message sent = last_sent();
+  ASSERT_EQ(sent.which_body, safecell_v1_Message_joint_state_tag);
+  EXPECT_EQ(sent.body.joint_state.applied_map_version, 1u);
+  EXPECT_EQ(sent.body.joint_state.position_rad_count, 6u);
+  EXPECT_DOUBLE_EQ(sent.body.joint_state.position_rad[2], 0.5);
+}
+
+TEST_F(ControllerLinkTest, AnotherLutFingerprintIsRefusedAndNamed) {
+  ScriptedCoprocessor stranger(kLuts + 1);
+  deliver(stranger.handshake(10 * kMs), 10 * kMs);
+  EXPECT_FALSE(link_.session_up());
+  EXPECT_EQ(link_.last_fault().error, LinkError::kWrongConfiguration);
+  EXPECT_EQ(link_.last_fault().detail, kLuts + 1);
+  EXPECT_FALSE(last_sent().body.handshake.accepted);
+  EXPECT_EQ(last_sent().body.handshake.lut_fingerprint, kLuts) << "the answer names ours";
+}
+
+TEST_F(ControllerLinkTest, StaleAndHashlessMapsAreRefusedAndTwoErrorsLatch) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  const auto first = map_with(100, 900);
+  // Captured 200 ms before arrival: older than the 150 ms maximum.
+  deliver(coprocessor_.update(nullptr, 0, first, 1, 10 * kMs, 210 * kMs), 210 * kMs);
+  EXPECT_EQ(link_.last_fault().error, LinkError::kDelay);
+  EXPECT_EQ(assembler_.version(), 0u);
+  EXPECT_FALSE(link_.latch().latched());
+  // A map without capture time cannot be aged: refused, and the second error latches.
+  deliver(coprocessor_.update(nullptr, 0, first, 2, 0, 220 * kMs), 220 * kMs);
+  EXPECT_EQ(assembler_.version(), 0u);
+  EXPECT_EQ(link_.block(221 * kMs), LinkBlock::kLatched);
+  link_.acknowledge();
+  deliver(coprocessor_.update(nullptr, 0, first, 3, 229 * kMs, 230 * kMs), 231 * kMs);
+  EXPECT_EQ(link_.block(232 * kMs), LinkBlock::kNone);
+}
+
+TEST_F(ControllerLinkTest, ANewSessionForgetsTheHeldMap) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  deliver(coprocessor_.update(nullptr, 0, map_with(0, 10), 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  ASSERT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
+  ScriptedCoprocessor restarted;
+  deliver(restarted.handshake(30 * kMs), 30 * kMs);
+  EXPECT_EQ(link_.block(31 * kMs), LinkBlock::kNoMap);
+  EXPECT_EQ(cell_bits::count(assembler_.map(), 0, kCells), kCells) << "no map: all forbidden";
+}
+
+TEST_F(ControllerLinkTest, OversizeDatagramsAndGarbageAreCorruption) {
+  deliver(Bytes(kMaxFrameBytes + 200, 0xAB), 1 * kMs);
+  EXPECT_EQ(link_.last_fault().error, LinkError::kCorruption);
+  deliver(Bytes(3, 0), 2 * kMs);
+  EXPECT_EQ(link_.last_fault().error, LinkError::kCorruption);
+  EXPECT_EQ(link_.block(3 * kMs), LinkBlock::kLatched);
+}
+
+}  // namespace
+}  // namespace safecell
