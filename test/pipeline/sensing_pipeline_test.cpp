@@ -120,6 +120,25 @@ TEST_F(SensingPipelineTest, AFrameSetsUnknownViewCountsAsSeeingEverything) {
   EXPECT_THROW(sensing.process(set, q), std::invalid_argument);
 }
 
+TEST_F(SensingPipelineTest, ACameraExposedOutOfSyncCountsAsAnUnknownView) {
+  SensingPipeline sensing = pipeline();  // sync_error_s 2 ms: +-2 ms around the median
+  const std::vector<double> q{0.0, 0.0, 1.0, 0.0, 0.5, 0.0};
+  const auto images = sim_->render(SimScene{q, {}}, 5, 0.0);
+  FrameSet set;
+  for (std::size_t c = 0; c < images.size(); ++c) {
+    set.frames.push_back(CameraFrame{cell_->cameras[c].name(), images[c], 1,
+                                     10.0 + 0.001 * static_cast<double>(c), StampSource::kBackend,
+                                     HealthReport{}});
+  }
+  EXPECT_EQ(sensing.process(set, q), luts_->static_cells);
+  EXPECT_EQ(sensing.out_of_sync_views(), 0u);
+  set.frames[2].exposure_s = 10.030;  // a frame late
+  (void)sensing.process(set, q);
+  EXPECT_EQ(sensing.out_of_sync_views(), 1u);
+  EXPECT_FALSE(sensing.observations()[2].known);
+  EXPECT_TRUE(set.frames[2].known()) << "the caller's frame set is left as it was";
+}
+
 TEST_F(SensingPipelineTest, BadInputIsRefused) {
   SensingPipeline sensing = pipeline();
   const std::vector<double> q{0.0, 0.0, 1.0, 0.0, 0.5, 0.0};

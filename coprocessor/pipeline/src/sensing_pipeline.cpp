@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/acquisition/exposure_sync.hpp"
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 
@@ -36,7 +37,8 @@ SensingPipeline::SensingPipeline(const CellModel& cell, const CspaceGrid& grid, 
     : cell_(cell),
       grid_(grid),
       at_configuration_(silhouettes_at_configuration(cell, grid, settings)),
-      fusion_(luts, silhouettes, settings, at_configuration_ ? &*at_configuration_ : nullptr) {
+      fusion_(luts, silhouettes, settings, at_configuration_ ? &*at_configuration_ : nullptr),
+      sync_error_s_(settings.sync_error_s) {
   const std::size_t cameras = cell.cameras.size();
   if (reference_frames.size() != cameras || (!noise_bits.empty() && noise_bits.size() != cameras) ||
       luts.cameras.size() != cameras) {
@@ -62,9 +64,13 @@ const CellSet& SensingPipeline::process(const FrameSet& frames, const std::vecto
     throw std::invalid_argument("a frame set of " + std::to_string(frames.frames.size()) +
                                 " cameras for a cell of " + std::to_string(cell_.cameras.size()));
   }
-  images_.resize(frames.frames.size());
-  for (std::size_t c = 0; c < frames.frames.size(); ++c) {
-    const CameraFrame& frame = frames.frames[c];
+  // A copy holds only image headers; out-of-sync views become unknown in it.
+  FrameSet checked = frames;
+  out_of_sync_views_ =
+      sync_error_s_ > 0.0 ? reject_out_of_sync_exposures(checked, 2.0 * sync_error_s_) : 0;
+  images_.resize(checked.frames.size());
+  for (std::size_t c = 0; c < checked.frames.size(); ++c) {
+    const CameraFrame& frame = checked.frames[c];
     if (frame.camera != cell_.cameras[c].name()) {
       throw std::invalid_argument("frame set camera " + std::to_string(c) + " is '" + frame.camera +
                                   "', the cell's is '" + cell_.cameras[c].name() + "'");

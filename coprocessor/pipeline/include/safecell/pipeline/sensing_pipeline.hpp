@@ -41,8 +41,13 @@ class SensingPipeline {
   const CellSet& process(const std::vector<cv::Mat>& frames, const std::vector<double>& q);
   // The same for a frame set from the cameras (acquisition): a camera whose view is unknown (it
   // delivered nothing usable, or its health monitor raised a fault) counts as seeing everything
-  // it can see. Throws std::invalid_argument when the cameras are not the cell's, in its order.
+  // it can see. So does a camera exposed more than settings.sync_error_s from the median exposure
+  // of the set (acquisition/exposure_sync.hpp): the robot's removal is widened for that much
+  // timing error only, and q must be the robot at the median exposure. Throws
+  // std::invalid_argument when the cameras are not the cell's, in its order.
   const CellSet& process(const FrameSet& frames, const std::vector<double>& q);
+  // Views of the last frame set made unknown because their exposure was out of sync.
+  [[nodiscard]] std::size_t out_of_sync_views() const { return out_of_sync_views_; }
 
   [[nodiscard]] const ForbiddenMapFusion& fusion() const { return fusion_; }
   [[nodiscard]] const std::vector<CameraObservation>& observations() const { return observations_; }
@@ -61,6 +66,8 @@ class SensingPipeline {
   ForbiddenMapFusion fusion_;
   CycleTimes times_;
   CellIndex robot_cell_ = 0;
+  double sync_error_s_;
+  std::size_t out_of_sync_views_ = 0;
 };
 
 }  // namespace safecell
