@@ -21,6 +21,7 @@
 #include "safecell/faultproxy/fault_proxy.hpp"
 #include "safecell/link/coprocessor_link.hpp"
 #include "safecell/link/udp_transport.hpp"
+#include "safecell/protocol/nanopb_codec.hpp"
 
 namespace safecell {
 namespace {
@@ -38,6 +39,56 @@ std::uint64_t steady_ns() {
                                         .count());
 }
 
+// The negative control of the check below: a receiver with neither the safety layer nor the map
+// checks (no CRC, sequence, version, base or hash; a map counts as taken at its last chunk). It
+// sees the same datagrams as the real one, and under faults it must take wrong maps, or the
+// check could not fail.
+class NaiveReceiver {
+ public:
+  explicit NaiveReceiver(CellIndex cells) : cells_(cells), words_(cell_bits::words_for(cells)) {}
+
+  void take(const std::uint8_t* data, std::size_t size) {
+    if (size < kFrameOverheadBytes || size > kMaxFrameBytes) return;
+    if (decode_message(data + kFrameHeaderBytes, size - kFrameOverheadBytes, message_) !=
+            Status::kOk ||
+        message_.which_body != safecell_v1_Message_map_chunk_tag) {
+      return;
+    }
+    const safecell_v1_MapChunk& chunk = message_.body.map_chunk;
+    const MapChunkView view{chunk.kind == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
+                                ? MapChunkKind::kDelta
+                                : MapChunkKind::kKeyframe,
+                            chunk.first_cell, chunk.end_cell, chunk.runs.bytes, chunk.runs.size};
+    (void)apply_map_chunk(view, words_.data(), cells_);
+    if (chunk.chunk_index + 1 == chunk.chunk_count) taken_[chunk.map_version] = words_;
+  }
+  const std::map<std::uint64_t, Words>& taken() const { return taken_; }
+
+ private:
+  CellIndex cells_;
+  Words words_;
+  safecell_v1_Message message_{};
+  std::map<std::uint64_t, Words> taken_;
+};
+
+// The controller's UDP port, letting the naive receiver see every datagram the link receives.
+class TappedPort final : public LinkPort {
+ public:
+  TappedPort(UdpLinkPort& inner, NaiveReceiver& tap) : inner_(inner), tap_(tap) {}
+  bool send(const std::uint8_t* data, std::size_t size) noexcept override {
+    return inner_.send(data, size);
+  }
+  std::size_t receive(std::uint8_t* buffer, std::size_t capacity) noexcept override {
+    const std::size_t size = inner_.receive(buffer, capacity);
+    if (size > 0 && size <= capacity) tap_.take(buffer, size);
+    return size;
+  }
+
+ private:
+  UdpLinkPort& inner_;
+  NaiveReceiver& tap_;
+};
+
 // The controller's side in its own thread: polls the link, sends a joint state every 4 ms and
 // records every map it takes.
 class ControllerSide {
@@ -49,7 +100,9 @@ class ControllerSide {
         assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
                    cells_),
         port_({"127.0.0.1", 0}, {"127.0.0.1", 9}),
-        link_(config, port_, assembler_) {}
+        naive_(cells_),
+        tapped_(port_, naive_),
+        link_(config, tapped_, assembler_) {}
   ~ControllerSide() { stop(); }
 
   std::uint16_t port() const { return port_.local_port(); }
@@ -69,6 +122,7 @@ class ControllerSide {
   }
   // Read after stop().
   const ControllerLink& link() const { return link_; }
+  const NaiveReceiver& naive() const { return naive_; }
   bool saw_block(LinkBlock block) const {
     return seen_blocks_ & (1U << static_cast<unsigned>(block));
   }
@@ -104,6 +158,8 @@ class ControllerSide {
   Words hashes_[2];
   MapAssembler assembler_;
   UdpLinkPort port_;
+  NaiveReceiver naive_;
+  TappedPort tapped_;
   ControllerLink link_;
   std::thread thread_;
   std::atomic<bool> running_{true};
@@ -129,9 +185,11 @@ std::vector<FaultClass> fault_classes() {
   FaultRates cut;
   cut.cut_after = 250ms;
   cut.cut_for = 250ms;
-  FaultRates delayed;  // 200 ms of everything 200 ms late: beyond the maximum data age
+  // 400 ms of everything 200 ms late, beyond the maximum data age (150 ms). The stretch outlasts
+  // the delay, so the first late frames arrive in order, as stale, before later ones overtake.
+  FaultRates delayed;
   delayed.delay_after = 250ms;
-  delayed.delay_for = 200ms;
+  delayed.delay_for = 400ms;
   delayed.delay_by = 200ms;
   FaultRates everything;
   everything.drop = everything.duplicate = everything.reorder = 0.03;
@@ -206,13 +264,17 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
   controller.stop();
   proxy.stop();
 
+  // Maps taken that differ from the one sent with their version (or were never sent).
+  const auto wrong_maps = [&sent](const std::map<std::uint64_t, Words>& maps) {
+    std::size_t wrong = 0;
+    for (const auto& [version, words] : maps) {
+      const auto original = sent.find(version);
+      wrong += original == sent.end() || words != original->second.words() ? 1U : 0U;
+    }
+    return wrong;
+  };
   const std::map<std::uint64_t, Words> taken = controller.taken();
-  std::size_t wrong = 0;
-  for (const auto& [version, words] : taken) {
-    const auto original = sent.find(version);
-    ASSERT_NE(original, sent.end()) << "the controller took version " << version << ", never sent";
-    wrong += words != original->second.words() ? 1U : 0U;
-  }
+  const std::size_t wrong = wrong_maps(taken);
   const ErrorLatch& detected = controller.link().latch();
   std::string causes;
   for (int e = 1; e < kLinkErrorCount; ++e) {
@@ -235,6 +297,15 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
     EXPECT_GT(detected.count(faults.expected), 0u)
         << faults.name << ": expected " << to_string(faults.expected) << ", detected: " << causes
         << "; proxy: " << proxy.report_json();
+  }
+  // The negative control: without the safety layer and the map checks, the same faults get
+  // wrong maps taken.
+  if (std::string(faults.name) == "everything") {
+    EXPECT_GT(wrong_maps(controller.naive().taken()), 0u)
+        << "a receiver without checks took no wrong map: the check could not fail";
+  }
+  if (std::string(faults.name) == "none") {
+    EXPECT_EQ(wrong_maps(controller.naive().taken()), 0u);
   }
   if (std::string(faults.name) == "cut") {
     EXPECT_TRUE(controller.saw_block(LinkBlock::kMapTooOld))
