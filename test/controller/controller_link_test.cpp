@@ -1,5 +1,5 @@
 // The controller's end of the link alone, on the controller's own code only (nanopb, the safety
-// layer, the assembler), so it also runs under qemu-aarch64: a scripted coprocessor opens a
+// layer, the map store), so it also runs under qemu-aarch64: a scripted coprocessor opens a
 // session, sends a keyframe and deltas, and misbehaves; the link takes what is right, refuses
 // what is not, and says whether the robot may move.
 
@@ -10,6 +10,7 @@
 #include <deque>
 #include <vector>
 
+#include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/map_hash.hpp"
 #include "safecell/protocol/nanopb_codec.hpp"
@@ -105,13 +106,8 @@ class ScriptedCoprocessor {
 class ControllerLinkTest : public ::testing::Test {
  protected:
   ControllerLinkTest()
-      : words_{std::vector<std::uint64_t>(cell_bits::words_for(kCells)),
-               std::vector<std::uint64_t>(cell_bits::words_for(kCells))},
-        hashes_{std::vector<std::uint64_t>(map_hash_blocks(kCells)),
-                std::vector<std::uint64_t>(map_hash_blocks(kCells))},
-        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
-                   kCells),
-        link_(config(), port_, assembler_) {}
+      : store_(MapStoreLayout::of(kCells, default_pool_blocks(kCells))),
+        link_(config(), port_, store_.store()) {}
 
   static ControllerLinkConfig config() {
     ControllerLinkConfig c;
@@ -129,7 +125,9 @@ class ControllerLinkTest : public ::testing::Test {
     link_.poll(now);
   }
   std::vector<std::uint64_t> held() const {
-    return {assembler_.map(), assembler_.map() + cell_bits::words_for(kCells)};
+    std::vector<std::uint64_t> words(cell_bits::words_for(kCells));
+    store_.store().view().copy_dense(words.data());
+    return words;
   }
   // The last message the link sent, decoded.
   safecell_v1_Message last_sent() {
@@ -143,9 +141,7 @@ class ControllerLinkTest : public ::testing::Test {
     return message;
   }
 
-  std::vector<std::uint64_t> words_[2];
-  std::vector<std::uint64_t> hashes_[2];
-  MapAssembler assembler_;
+  HostMapStore store_;
   MemoryPort port_;
   ControllerLink link_;
   ScriptedCoprocessor coprocessor_;
@@ -202,11 +198,11 @@ TEST_F(ControllerLinkTest, StaleAndHashlessMapsAreRefusedAndTwoErrorsLatch) {
   // Captured 200 ms before arrival: older than the 150 ms maximum.
   deliver(coprocessor_.update(nullptr, 0, first, 1, 10 * kMs, 210 * kMs), 210 * kMs);
   EXPECT_EQ(link_.last_fault().error, LinkError::kDelay);
-  EXPECT_EQ(assembler_.version(), 0u);
+  EXPECT_EQ(store_.store().version(), 0u);
   EXPECT_FALSE(link_.latch().latched());
   // A map without capture time cannot be aged: refused, and the second error latches.
   deliver(coprocessor_.update(nullptr, 0, first, 2, 0, 220 * kMs), 220 * kMs);
-  EXPECT_EQ(assembler_.version(), 0u);
+  EXPECT_EQ(store_.store().version(), 0u);
   EXPECT_EQ(link_.block(221 * kMs), LinkBlock::kLatched);
   link_.acknowledge();
   deliver(coprocessor_.update(nullptr, 0, first, 3, 229 * kMs, 230 * kMs), 231 * kMs);
@@ -220,7 +216,7 @@ TEST_F(ControllerLinkTest, ANewSessionForgetsTheHeldMap) {
   ScriptedCoprocessor restarted;
   deliver(restarted.handshake(30 * kMs), 30 * kMs);
   EXPECT_EQ(link_.block(31 * kMs), LinkBlock::kNoMap);
-  EXPECT_EQ(cell_bits::count(assembler_.map(), 0, kCells), kCells) << "no map: all forbidden";
+  EXPECT_EQ(cell_bits::count(held().data(), 0, kCells), kCells) << "no map: all forbidden";
 }
 
 TEST_F(ControllerLinkTest, OversizeDatagramsAndGarbageAreCorruption) {

@@ -10,44 +10,16 @@
 
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/map_hash.hpp"
+#include "safecell/test/map_updates.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {
 namespace {
 
-using Words = std::vector<std::uint64_t>;
-
-struct SentChunk {
-  MapChunkHeader header;
-  std::vector<std::uint8_t> runs;
-};
-
-// What a sender emits for `target` (a keyframe when base is null, else the delta base -> target).
-std::vector<SentChunk> update_of(const Words* base, std::uint64_t base_version, const Words& target,
-                                 std::uint64_t version, CellIndex cells, std::size_t capacity) {
-  std::vector<SentChunk> chunks;
-  CellIndex from = 0;
-  do {
-    SentChunk chunk;
-    chunk.header.kind = base ? MapChunkKind::kDelta : MapChunkKind::kKeyframe;
-    chunk.header.map_version = version;
-    chunk.header.base_version = base ? base_version : 0;
-    chunk.header.map_hash = map_hash(target.data(), cells);
-    chunk.header.chunk_index = static_cast<std::uint32_t>(chunks.size());
-    chunk.header.first_cell = from;
-    chunk.runs.resize(capacity);
-    std::size_t size = 0;
-    chunk.header.end_cell =
-        base ? encode_delta_chunk(base->data(), target.data(), cells, from, chunk.runs.data(),
-                                  capacity, size)
-             : encode_keyframe_chunk(target.data(), cells, from, chunk.runs.data(), capacity, size);
-    chunk.runs.resize(size);
-    from = chunk.header.end_cell;
-    chunks.push_back(std::move(chunk));
-  } while (from < cells);
-  for (auto& chunk : chunks) chunk.header.chunk_count = static_cast<std::uint32_t>(chunks.size());
-  return chunks;
-}
+using test::random_map;
+using test::SentChunk;
+using test::update_of;
+using test::Words;
 
 class Receiver {
  public:
@@ -81,16 +53,6 @@ class Receiver {
   Words hashes_[2];
   MapAssembler assembler_;
 };
-
-Words random_map(CellIndex cells, std::mt19937_64& rng) {
-  Words words(cell_bits::words_for(cells), 0);
-  for (CellIndex at = 0; at < cells;) {
-    const CellIndex end = std::min(cells, static_cast<CellIndex>(at + 1 + rng() % 400));
-    if (rng() % 2 == 0) cell_bits::set_range(words.data(), at, end);
-    at = end;
-  }
-  return words;
-}
 
 TEST(MapAssembler, StartsWithNoMapAndEverythingForbidden) {
   Receiver receiver(1000);

@@ -1,6 +1,8 @@
-// Map chunks with any header and any run list, offered to the controller's assembler holding a
-// map: never a read or write outside its storage; a refused chunk leaves the held map as it was;
-// an applied update's map has the hash it claimed.
+// Map chunks with any header and any run list, offered to the dense assembler and to the
+// controller's compressed store (a pool of 3 blocks, so it overflows), each holding a map: never a
+// read or write outside their storage; a refused chunk leaves the held map as it was; an applied
+// update's map has the hash it claimed; the store never holds a cell free that the dense one
+// holds forbidden for the same version.
 //
 // Input: a sequence of chunks, each  [kind 1][version 1][base 1][index 1][count 1][first 2]
 // [end 2][hash selector 1][run bytes n 1][n bytes]; the grid has 3000 cells.
@@ -9,6 +11,7 @@
 
 #include "fuzz_targets.hpp"
 #include "safecell/base/assert.hpp"
+#include "safecell/controller/map_store.hpp"
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/map_assembler.hpp"
 #include "safecell/cspace/map_hash.hpp"
@@ -19,6 +22,17 @@ namespace {
 constexpr CellIndex kCells = 3000;
 constexpr std::uint32_t kWords = cell_bits::words_for(kCells);
 constexpr std::uint32_t kBlocks = map_hash_blocks(kCells);
+constexpr MapStoreLayout kStoreLayout = MapStoreLayout::of(kCells, 3);
+
+struct StoreMemory {
+  std::uint32_t slots[2][kStoreLayout.blocks];
+  std::uint64_t pool[kStoreLayout.pool_blocks * kStoreBlockWords];
+  std::uint32_t free_blocks[kStoreLayout.pool_blocks];
+  std::uint32_t changed_blocks[kStoreLayout.blocks];
+  std::uint64_t block_hashes[kStoreLayout.hash_blocks];
+  std::uint64_t new_hashes[kStoreLayout.hash_blocks];
+  std::uint32_t new_hash_blocks[kStoreLayout.hash_blocks];
+};
 
 }  // namespace
 
@@ -26,6 +40,14 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
   static std::uint64_t words[2][kWords];
   static std::uint64_t hashes[2][kBlocks];
   MapAssembler assembler({{words[0], words[1]}, {hashes[0], hashes[1]}}, kCells);
+  static StoreMemory memory;
+  MapStore store(kStoreLayout, {{memory.slots[0], memory.slots[1]},
+                                memory.pool,
+                                memory.free_blocks,
+                                memory.changed_blocks,
+                                memory.block_hashes,
+                                memory.new_hashes,
+                                memory.new_hash_blocks});
   // A first map to hold: cells 100..199 forbidden, version 1.
   {
     std::uint64_t target[kWords] = {};
@@ -40,6 +62,7 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
     header.end_cell = kCells;
     SAFECELL_ASSERT(assembler.offer(header, runs, runs_size).outcome ==
                     MapAssembler::Outcome::kApplied);
+    SAFECELL_ASSERT(store.offer(header, runs, runs_size, 1).outcome == MapOutcome::kApplied);
   }
   std::size_t at = 0;
   while (at + 11 <= size) {
@@ -60,7 +83,11 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
     std::uint64_t held_before[kWords];
     std::memcpy(held_before, assembler.map(), sizeof held_before);
     const std::uint64_t version_before = assembler.version();
+    std::uint64_t store_before[kWords];
+    store.view().copy_dense(store_before);
+    const std::uint64_t store_version_before = store.version();
     const MapAssembler::Offer offer = assembler.offer(header, data + at, runs_size);
+    const MapOffer store_offer = store.offer(header, data + at, runs_size, 1);
     at += runs_size;
     if (offer.outcome == MapAssembler::Outcome::kApplied) {
       SAFECELL_ASSERT(assembler.version() == header.map_version);
@@ -68,6 +95,19 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
     } else {
       SAFECELL_ASSERT(assembler.version() == version_before);
       SAFECELL_ASSERT(std::memcmp(held_before, assembler.map(), sizeof held_before) == 0);
+    }
+    std::uint64_t store_now[kWords];
+    store.view().copy_dense(store_now);
+    if (store_offer.outcome == MapOutcome::kApplied) {
+      SAFECELL_ASSERT(store.version() == header.map_version && store.hash() == header.map_hash);
+    } else {
+      SAFECELL_ASSERT(store.version() == store_version_before);
+      SAFECELL_ASSERT(std::memcmp(store_before, store_now, sizeof store_now) == 0);
+    }
+    if (store.version() == assembler.version()) {
+      for (std::uint32_t w = 0; w < kWords; ++w) {
+        SAFECELL_ASSERT((assembler.map()[w] & ~store_now[w]) == 0);
+      }
     }
     // Bits past the last cell stay zero.
     SAFECELL_ASSERT((assembler.map()[kWords - 1] >> (kCells % 64)) == 0);

@@ -15,6 +15,7 @@
 
 #include "demo_maps.hpp"
 #include "safecell/controller/controller_link.hpp"
+#include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/controller/host/udp_link_port.hpp"
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/map_hash.hpp"
@@ -95,14 +96,11 @@ class ControllerSide {
  public:
   ControllerSide(const CspaceGrid& grid, const ControllerLinkConfig& config)
       : cells_(grid.cell_count()),
-        words_{Words(cell_bits::words_for(cells_)), Words(cell_bits::words_for(cells_))},
-        hashes_{Words(map_hash_blocks(cells_)), Words(map_hash_blocks(cells_))},
-        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
-                   cells_),
+        store_(MapStoreLayout::of(cells_, default_pool_blocks(cells_))),
         port_({"127.0.0.1", 0}, {"127.0.0.1", 9}),
         naive_(cells_),
         tapped_(port_, naive_),
-        link_(config, tapped_, assembler_) {}
+        link_(config, tapped_, store_.store()) {}
   ~ControllerSide() { stop(); }
 
   std::uint16_t port() const { return port_.local_port(); }
@@ -137,10 +135,12 @@ class ControllerSide {
       (void)port_.wait_readable(1000);
       link_.poll(now());
       if (link_.session_up()) seen_blocks_ |= 1U << static_cast<unsigned>(link_.block(now()));
-      if (assembler_.version() != held) {
-        held = assembler_.version();
+      if (store_.store().version() != held) {
+        held = store_.store().version();
         const std::lock_guard lock(mutex_);
-        taken_[held] = Words(assembler_.map(), assembler_.map() + cell_bits::words_for(cells_));
+        Words words(cell_bits::words_for(cells_));
+        store_.store().view().copy_dense(words.data());
+        taken_[held] = std::move(words);
       }
       if (now() >= next_joint_state) {
         JointSample joints;
@@ -154,9 +154,7 @@ class ControllerSide {
   }
 
   CellIndex cells_;
-  Words words_[2];
-  Words hashes_[2];
-  MapAssembler assembler_;
+  HostMapStore store_;
   UdpLinkPort port_;
   NaiveReceiver naive_;
   TappedPort tapped_;

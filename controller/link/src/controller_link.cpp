@@ -41,10 +41,10 @@ const char* to_string(LinkBlock block) noexcept {
 }
 
 ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
-                               MapAssembler& assembler) noexcept
+                               MapStore& store) noexcept
     : config_(config),
       port_(port),
-      assembler_(assembler),
+      store_(store),
       limits_{config.max_data_age_ns, config.max_clock_lead_ns, config.watchdog_ns},
       fingerprint_(configuration_fingerprint(config.grid_fingerprint, config.lut_fingerprint)),
       checker_(LinkEndpoints{}, limits_, 0),
@@ -126,8 +126,7 @@ void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_
     session_id_ = header.session_id;
     checker_ = FrameChecker(endpoints, limits_, now_ns, header.sequence);
     sealer_ = FrameSealer(endpoints);
-    assembler_.reset();
-    map_capture_ns_ = 0;
+    store_.reset();
     map_applied_ns_ = 0;
   }
   reply_ = safecell_v1_Message_init_zero;
@@ -189,25 +188,24 @@ void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns
 
 void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
                                       std::uint64_t now_ns) noexcept {
-  const MapAssembler::Offer offer =
-      assembler_.offer(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size);
-  if (offer.outcome == MapAssembler::Outcome::kApplied) {
-    map_capture_ns_ = frame.header.capture_time_ns;
+  const MapOffer offer = store_.offer(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size,
+                                      frame.header.capture_time_ns);
+  if (offer.outcome == MapOutcome::kApplied) {
     map_applied_ns_ = now_ns;
     healthy_cameras_ = chunk.healthy_cameras;
     ++updates_applied_;
     return;
   }
-  if (offer.outcome != MapAssembler::Outcome::kRefused) return;
+  if (offer.outcome != MapOutcome::kRefused) return;
   ++updates_refused_;
   last_map_refusal_ = offer.refusal;
   // A torn update is repaired by the next delta (against the version acknowledged); a map that
   // disagrees with the sender's needs a keyframe.
   if (offer.refusal == MapRefusal::kHashMismatch || offer.refusal == MapRefusal::kBaseMismatch ||
-      offer.refusal == MapRefusal::kBadChunk) {
+      offer.refusal == MapRefusal::kBadChunk || offer.refusal == MapRefusal::kBaseInexact) {
     reply_ = safecell_v1_Message_init_zero;
     reply_.which_body = safecell_v1_Message_keyframe_request_tag;
-    reply_.body.keyframe_request.held_map_version = assembler_.version();
+    reply_.body.keyframe_request.held_map_version = store_.version();
     send(sealer_, now_ns, now_ns);
   }
 }
@@ -226,7 +224,7 @@ void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_Con
     out.position_rad[j] = joints.position_rad[j];
     out.velocity_rad_s[j] = joints.velocity_rad_s[j];
   }
-  out.applied_map_version = assembler_.version();
+  out.applied_map_version = store_.version();
   out.state = state;
   out.speed_scale = speed_scale;
   send(sealer_, joints.read_time_ns, now_ns);
@@ -245,7 +243,7 @@ LinkBlock ControllerLink::block(std::uint64_t now_ns) const noexcept {
   if (latch_.latched()) return LinkBlock::kLatched;
   if (stop_requested_) return LinkBlock::kStopRequested;
   if (!session_up_) return LinkBlock::kNoSession;
-  if (assembler_.version() == 0) return LinkBlock::kNoMap;
+  if (store_.version() == 0) return LinkBlock::kNoMap;
   if (now_ns < map_applied_ns_ || now_ns - map_applied_ns_ > config_.watchdog_ns) {
     return LinkBlock::kMapTooOld;
   }

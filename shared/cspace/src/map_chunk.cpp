@@ -69,12 +69,10 @@ CellIndex encode_delta_chunk(const std::uint64_t* base, const std::uint64_t* tar
   return cell_count;
 }
 
-Status apply_map_chunk(const MapChunkView& chunk, std::uint64_t* words, CellIndex cell_count,
-                       CellSpan* changed) {
+Status check_map_chunk(const MapChunkView& chunk, CellIndex cell_count, CellSpan* changed) {
   if (chunk.first_cell > chunk.end_cell || chunk.end_cell > cell_count) return Status::kOutOfRange;
   if (chunk.runs == nullptr && chunk.runs_size != 0) return Status::kInvalidArgument;
   const bool keyframe = chunk.kind == MapChunkKind::kKeyframe;
-  // Pass 1: the whole run list is valid for this chunk.
   RunReader check(chunk.runs, chunk.runs_size, chunk.first_cell, chunk.end_cell);
   CellSpan span{chunk.first_cell, chunk.first_cell};
   for (;;) {
@@ -89,6 +87,15 @@ Status apply_map_chunk(const MapChunkView& chunk, std::uint64_t* words, CellInde
   }
   if (keyframe) span = {chunk.first_cell, chunk.end_cell};
   if (changed != nullptr) *changed = span;
+  return Status::kOk;
+}
+
+Status apply_map_chunk(const MapChunkView& chunk, std::uint64_t* words, CellIndex cell_count,
+                       CellSpan* changed) {
+  // Pass 1: the whole run list is valid for this chunk.
+  const Status checked = check_map_chunk(chunk, cell_count, changed);
+  if (checked != Status::kOk) return checked;
+  const bool keyframe = chunk.kind == MapChunkKind::kKeyframe;
   // Pass 2: apply.
   if (keyframe) cell_bits::clear_range(words, chunk.first_cell, chunk.end_cell);
   RunReader apply(chunk.runs, chunk.runs_size, chunk.first_cell, chunk.end_cell);

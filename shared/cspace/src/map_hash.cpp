@@ -5,21 +5,14 @@
 namespace safecell {
 namespace {
 
-constexpr std::uint64_t mix(std::uint64_t x) noexcept {
-  x ^= x >> 33;
-  x *= 0xFF51AFD7ED558CCDull;
-  x ^= x >> 33;
-  x *= 0xC4CEB9FE1A85EC53ull;
-  x ^= x >> 33;
-  return x;
-}
+constexpr std::uint64_t mix(std::uint64_t x) noexcept { return map_hash_mix(x); }
 
 }  // namespace
 
 std::uint64_t map_block_hash(const std::uint64_t* words, CellIndex cell_count,
                              std::uint32_t block) noexcept {
   const std::uint32_t word_count = cell_bits::words_for(cell_count);
-  std::uint64_t hash = mix(std::uint64_t{block} + 1);
+  std::uint64_t hash = map_block_hash_seed(block);
   const std::uint32_t first = block * kMapHashBlockWords;
   for (std::uint32_t w = first; w < first + kMapHashBlockWords; ++w) {
     hash = mix(hash ^ (w < word_count ? words[w] : 0));

@@ -7,7 +7,7 @@
 //               own configuration and answers accepted or not. A new session forgets the held
 //               map: no motion until a keyframe of the new session is verified.
 //   data frames checked by the safety layer (frame_checker.hpp); map chunks go to the
-//               MapAssembler; clock echoes are answered at once; stop requests are latched.
+//               MapStore; clock echoes are answered at once; stop requests are latched.
 // Every detected communication error is counted and fed to the error latch (a second one within
 // the window latches a stop until acknowledge()).
 //
@@ -21,7 +21,7 @@
 #include <cstdint>
 
 #include "safecell/controller/link_port.hpp"
-#include "safecell/cspace/map_assembler.hpp"
+#include "safecell/controller/map_store.hpp"
 #include "safecell/protocol/error_latch.hpp"
 #include "safecell/protocol/frame_checker.hpp"
 #include "safecell/v1/message.nanopb.h"
@@ -64,7 +64,7 @@ class ControllerLink {
   static constexpr int kMaxFramesPerPoll = 64;
 
   ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
-                 MapAssembler& assembler) noexcept;
+                 MapStore& store) noexcept;
 
   // Handles the frames waiting on the port.
   void poll(std::uint64_t now_ns) noexcept;
@@ -80,7 +80,7 @@ class ControllerLink {
   bool session_up() const noexcept { return session_up_; }
   std::uint64_t session_id() const noexcept { return session_id_; }
   // The capture time of the held map's data (controller clock); 0 without a map.
-  std::uint64_t map_capture_ns() const noexcept { return map_capture_ns_; }
+  std::uint64_t map_capture_ns() const noexcept { return store_.capture_ns(); }
   std::uint32_t healthy_cameras() const noexcept { return healthy_cameras_; }
   const ErrorLatch& latch() const noexcept { return latch_; }
   const LinkFault& last_fault() const noexcept { return last_fault_; }
@@ -102,7 +102,7 @@ class ControllerLink {
 
   ControllerLinkConfig config_;
   LinkPort& port_;
-  MapAssembler& assembler_;
+  MapStore& store_;
   ArrivalLimits limits_;
   std::uint64_t fingerprint_;
 
@@ -115,7 +115,6 @@ class ControllerLink {
   bool stop_requested_ = false;
   safecell_v1_FaultCause stop_cause_ = safecell_v1_FaultCause_FAULT_CAUSE_UNSPECIFIED;
 
-  std::uint64_t map_capture_ns_ = 0;
   std::uint64_t map_applied_ns_ = 0;
   std::uint32_t healthy_cameras_ = 0;
   MapRefusal last_map_refusal_ = MapRefusal::kNone;

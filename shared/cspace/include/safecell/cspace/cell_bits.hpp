@@ -85,6 +85,23 @@ CellIndex next_set_in(WordOf word_of, CellIndex from, CellIndex limit) noexcept 
   return found < limit ? found : limit;
 }
 
+// The last cell in [from, limit) whose bit in word_of(w) is set; `limit` when none.
+template <typename WordOf>
+CellIndex last_set_in(WordOf word_of, CellIndex from, CellIndex limit) noexcept {
+  if (from >= limit) return limit;
+  const std::uint32_t first_word = from >> 6;
+  std::uint32_t word = (limit - 1) >> 6;
+  const std::uint32_t top_bits = ((limit - 1) & 63) + 1;
+  std::uint64_t bits = word_of(word);
+  if (top_bits < 64) bits &= (std::uint64_t{1} << top_bits) - 1;
+  while (bits == 0) {
+    if (word == first_word) return limit;
+    bits = word_of(--word);
+  }
+  const CellIndex found = word * 64 + 63 - static_cast<CellIndex>(std::countl_zero(bits));
+  return found >= from ? found : limit;
+}
+
 inline CellIndex next_set(const std::uint64_t* words, CellIndex from, CellIndex limit) noexcept {
   return next_set_in([words](std::uint32_t w) { return words[w]; }, from, limit);
 }

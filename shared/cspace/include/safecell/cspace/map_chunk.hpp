@@ -46,6 +46,12 @@ struct CellSpan {
   CellIndex end = 0;
 };
 
+// Checks one chunk whole without applying it: kOutOfRange for a range outside the grid or
+// reversed, kInvalidArgument for a malformed run list, a run outside the range or, in a keyframe,
+// a clear run. `changed`, when given, receives the span the chunk may change (as below).
+Status check_map_chunk(const MapChunkView& chunk, CellIndex cell_count,
+                       CellSpan* changed = nullptr);
+
 // Applies one chunk to `words` (a map of cell_count cells). The chunk is checked whole before any
 // bit changes: a range outside the grid or reversed, a malformed run list, a run outside the
 // range or, in a keyframe, a clear run, are refused (kOutOfRange / kInvalidArgument) with `words`

@@ -26,6 +26,20 @@ constexpr std::uint32_t map_hash_blocks(std::uint32_t cell_count) noexcept {
                                     kMapHashBlockCells);
 }
 
+// The mixing step and a block's starting value, for receivers that hash a map as they rebuild it
+// (the controller's compressed store feeds each block's 64 words in order).
+constexpr std::uint64_t map_hash_mix(std::uint64_t x) noexcept {
+  x ^= x >> 33;
+  x *= 0xFF51AFD7ED558CCDull;
+  x ^= x >> 33;
+  x *= 0xC4CEB9FE1A85EC53ull;
+  x ^= x >> 33;
+  return x;
+}
+constexpr std::uint64_t map_block_hash_seed(std::uint32_t block) noexcept {
+  return map_hash_mix(std::uint64_t{block} + 1);
+}
+
 // The hash of block `block` of a map of cell_count cells (precondition: block < blocks).
 std::uint64_t map_block_hash(const std::uint64_t* words, CellIndex cell_count,
                              std::uint32_t block) noexcept;

@@ -1,0 +1,63 @@
+#pragma once
+// The memory of a MapStore on Linux: every array of MapStoreStorage allocated once, at init, to
+// the sizes of a MapStoreLayout. (A bare-metal build uses static arrays of the same sizes.)
+// Not copyable: the store keeps pointers into it.
+
+#include <cstdint>
+#include <vector>
+
+#include "safecell/controller/map_store.hpp"
+
+namespace safecell {
+
+class MapStoreMemory {
+ public:
+  explicit MapStoreMemory(const MapStoreLayout& layout)
+      : layout_(layout),
+        slots_{std::vector<std::uint32_t>(layout.blocks),
+               std::vector<std::uint32_t>(layout.blocks)},
+        pool_(std::size_t{layout.pool_blocks} * kStoreBlockWords),
+        free_blocks_(layout.pool_blocks),
+        changed_blocks_(layout.blocks),
+        block_hashes_(layout.hash_blocks),
+        new_hashes_(layout.hash_blocks),
+        new_hash_blocks_(layout.hash_blocks) {}
+  MapStoreMemory(const MapStoreMemory&) = delete;
+  MapStoreMemory& operator=(const MapStoreMemory&) = delete;
+
+  const MapStoreLayout& layout() const { return layout_; }
+  MapStoreStorage storage() {
+    return {{slots_[0].data(), slots_[1].data()},
+            pool_.data(),
+            free_blocks_.data(),
+            changed_blocks_.data(),
+            block_hashes_.data(),
+            new_hashes_.data(),
+            new_hash_blocks_.data()};
+  }
+
+ private:
+  MapStoreLayout layout_;
+  std::vector<std::uint32_t> slots_[2];
+  std::vector<std::uint64_t> pool_;
+  std::vector<std::uint32_t> free_blocks_;
+  std::vector<std::uint32_t> changed_blocks_;
+  std::vector<std::uint64_t> block_hashes_;
+  std::vector<std::uint64_t> new_hashes_;
+  std::vector<std::uint32_t> new_hash_blocks_;
+};
+
+// A MapStore with its memory, for the Linux module and the tests.
+class HostMapStore {
+ public:
+  explicit HostMapStore(const MapStoreLayout& layout)
+      : memory_(layout), store_(layout, memory_.storage()) {}
+  MapStore& store() { return store_; }
+  const MapStore& store() const { return store_; }
+
+ private:
+  MapStoreMemory memory_;
+  MapStore store_;
+};
+
+}  // namespace safecell

@@ -1,0 +1,298 @@
+#include "safecell/controller/map_store.hpp"
+
+#include "safecell/base/assert.hpp"
+#include "safecell/cspace/run_coding.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr std::uint32_t kBlocksPerHashBlock = kMapHashBlockCells / kStoreBlockCells;
+static_assert(kMapHashBlockCells % kStoreBlockCells == 0, "store blocks tile the hash blocks");
+
+}  // namespace
+
+MapStore::MapStore(const MapStoreLayout& layout, const MapStoreStorage& storage) noexcept
+    : layout_(layout), storage_(storage) {
+  SAFECELL_ASSERT(layout.cell_count > 0 && layout.blocks == store_blocks_for(layout.cell_count) &&
+                  layout.hash_blocks == map_hash_blocks(layout.cell_count));
+  SAFECELL_ASSERT(storage.slots[0] != nullptr && storage.slots[1] != nullptr &&
+                  storage.changed_blocks != nullptr && storage.block_hashes != nullptr &&
+                  storage.new_hashes != nullptr && storage.new_hash_blocks != nullptr);
+  SAFECELL_ASSERT(layout.pool_blocks == 0 ||
+                  (storage.pool != nullptr && storage.free_blocks != nullptr));
+  reset();
+}
+
+void MapStore::reset() noexcept {
+  for (std::uint32_t b = 0; b < layout_.blocks; ++b) {
+    storage_.slots[0][b] = kForbiddenSlot;
+    storage_.slots[1][b] = kForbiddenSlot;
+  }
+  for (std::uint32_t h = 0; h < layout_.hash_blocks; ++h) storage_.block_hashes[h] = 0;
+  free_count_ = 0;
+  for (std::uint32_t p = layout_.pool_blocks; p > 0; --p)
+    storage_.free_blocks[free_count_++] = p - 1;
+  held_ = 0;
+  degraded_blocks_ = 0;
+  version_ = 0;
+  hash_ = 0;
+  capture_ns_ = 0;
+  sequence_ = MapUpdateSequence{};
+  changed_count_ = 0;
+  abandon();
+}
+
+MapOffer MapStore::offer(const MapChunkHeader& header, const std::uint8_t* runs,
+                         std::size_t runs_size, std::uint64_t capture_ns) noexcept {
+  const MapUpdateSequence::Verdict verdict = sequence_.check(header, version_);
+  if (verdict.step == MapUpdateSequence::Step::kIgnore) {
+    return {MapOutcome::kIgnored, MapRefusal::kNone};
+  }
+  if (verdict.step == MapUpdateSequence::Step::kRefuse) return drop(header, verdict.refusal);
+  if (verdict.step == MapUpdateSequence::Step::kBegin) {
+    abandon();  // the rest of an update being collected was lost
+    begin_stream(header.kind, capture_ns);
+  } else if (capture_ns < update_capture_ns_) {
+    update_capture_ns_ = capture_ns;
+  }
+  const MapChunkView chunk{header.kind, header.first_cell, header.end_cell, runs, runs_size};
+  if (check_map_chunk(chunk, layout_.cell_count) != Status::kOk || !apply_runs(chunk)) {
+    return drop(header, MapRefusal::kBadChunk);
+  }
+  if (inexact_) return drop(header, MapRefusal::kBaseInexact);
+  const MapUpdateSequence::Progress progress = sequence_.advanced(header, layout_.cell_count);
+  if (progress == MapUpdateSequence::Progress::kBadChunk) {
+    return drop(header, MapRefusal::kBadChunk);
+  }
+  if (progress == MapUpdateSequence::Progress::kPending) {
+    return {MapOutcome::kPending, MapRefusal::kNone};
+  }
+  // The last chunk: finish the stream (the blocks after the last run), then check the hash.
+  if (loaded_) finish_loaded();
+  pass_until(layout_.blocks);
+  if (inexact_) return drop(header, MapRefusal::kBaseInexact);
+  const std::uint64_t hash = update_hash();
+  if (hash != sequence_.update().map_hash) return drop(header, MapRefusal::kHashMismatch);
+  commit(sequence_.update().map_version, hash);
+  sequence_.finished();
+  return {MapOutcome::kApplied, MapRefusal::kNone};
+}
+
+MapOffer MapStore::drop(const MapChunkHeader& header, MapRefusal refusal) noexcept {
+  abandon();
+  sequence_.dropped(header);
+  return {MapOutcome::kRefused, refusal};
+}
+
+void MapStore::begin_stream(MapChunkKind kind, std::uint64_t capture_ns) noexcept {
+  keyframe_ = kind == MapChunkKind::kKeyframe;
+  update_capture_ns_ = capture_ns;
+}
+
+void MapStore::abandon() noexcept {
+  // Undo the working table's changes: it equals the held table again, and the pool blocks the
+  // update took are free.
+  std::uint32_t* work = storage_.slots[1 - held_];
+  const std::uint32_t* held = storage_.slots[held_];
+  for (std::uint32_t i = 0; i < changed_count_; ++i) {
+    const std::uint32_t block = storage_.changed_blocks[i];
+    if (is_pool_slot(work[block])) storage_.free_blocks[free_count_++] = work[block];
+    work[block] = held[block];
+  }
+  changed_count_ = 0;
+  new_hash_count_ = 0;
+  next_block_ = 0;
+  loaded_ = false;
+  hash_open_ = false;
+  inexact_ = false;
+}
+
+void MapStore::commit(std::uint64_t version, std::uint64_t hash) noexcept {
+  const std::uint32_t* work = storage_.slots[1 - held_];
+  const std::uint32_t* held = storage_.slots[held_];
+  for (std::uint32_t i = 0; i < changed_count_; ++i) {
+    const std::uint32_t block = storage_.changed_blocks[i];
+    if (is_pool_slot(held[block])) storage_.free_blocks[free_count_++] = held[block];
+    if (held[block] == kDegradedSlot) --degraded_blocks_;
+    if (work[block] == kDegradedSlot) ++degraded_blocks_;
+  }
+  held_ = 1 - held_;  // the swap: from here on view() shows the new map
+  std::uint32_t* stale = storage_.slots[1 - held_];
+  for (std::uint32_t i = 0; i < changed_count_; ++i) {
+    const std::uint32_t block = storage_.changed_blocks[i];
+    stale[block] = storage_.slots[held_][block];
+  }
+  for (std::uint32_t i = 0; i < new_hash_count_; ++i) {
+    storage_.block_hashes[storage_.new_hash_blocks[i]] = storage_.new_hashes[i];
+  }
+  version_ = version;
+  hash_ = hash;
+  capture_ns_ = update_capture_ns_;
+  changed_count_ = 0;  // nothing to undo: the working table equals the held one
+  abandon();
+}
+
+bool MapStore::apply_runs(const MapChunkView& chunk) noexcept {
+  RunReader reader(chunk.runs, chunk.runs_size, chunk.first_cell, chunk.end_cell);
+  for (Result<CellRun> next = reader.next(); next.ok(); next = reader.next()) {
+    const CellRun& run = next.value();
+    CellIndex cell = run.begin;
+    while (cell < run.end) {
+      const std::uint32_t block = cell / kStoreBlockCells;
+      // Runs come in grid order (check_map_chunk and the update sequence saw to it).
+      if (block < next_block_) return false;
+      const CellIndex block_first = block * kStoreBlockCells;
+      const CellIndex block_end = block_first + kStoreBlockCells < layout_.cell_count
+                                      ? block_first + kStoreBlockCells
+                                      : layout_.cell_count;
+      const CellIndex segment_end = run.end < block_end ? run.end : block_end;
+      const bool whole = cell == block_first && segment_end == block_end;
+      seek(block, whole);
+      if (whole) {
+        for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+          scratch_[w] = run.value ? valid_bits(block, w) : 0;
+        }
+      } else if (run.value) {
+        cell_bits::set_range(scratch_, cell - block_first, segment_end - block_first);
+      } else {
+        cell_bits::clear_range(scratch_, cell - block_first, segment_end - block_first);
+      }
+      cell = segment_end;
+    }
+  }
+  return true;
+}
+
+void MapStore::seek(std::uint32_t block, bool whole) noexcept {
+  if (loaded_ && block == next_block_) return;
+  if (loaded_) finish_loaded();
+  pass_until(block);
+  loaded_ = true;
+  if (whole) return;  // the caller writes every word
+  if (keyframe_) {
+    for (std::uint64_t& word : scratch_) word = 0;
+  } else {
+    held_words(block, scratch_);
+  }
+}
+
+void MapStore::finish_loaded() noexcept {
+  feed_hash(next_block_, scratch_);
+  store(next_block_, scratch_);
+  ++next_block_;
+  loaded_ = false;
+}
+
+void MapStore::pass_until(std::uint32_t block) noexcept {
+  // The blocks no run touched: a keyframe clears them; a delta keeps them, and only hashes them
+  // when another block of their hash block changed.
+  std::uint64_t words[kStoreBlockWords];
+  while (next_block_ < block) {
+    if (keyframe_) {
+      for (std::uint64_t& word : words) word = 0;
+      feed_hash(next_block_, words);
+      store(next_block_, words);
+    } else if (hash_open_) {
+      held_words(next_block_, words);
+      feed_hash(next_block_, words);
+    } else {
+      next_block_ = block;
+      return;
+    }
+    ++next_block_;
+  }
+}
+
+void MapStore::held_words(std::uint32_t block, std::uint64_t* out) noexcept {
+  const std::uint32_t slot = storage_.slots[held_][block];
+  if (slot == kDegradedSlot) inexact_ = true;  // the exact words are gone
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+    if (is_pool_slot(slot)) {
+      out[w] = storage_.pool[std::uint64_t{slot} * kStoreBlockWords + w];
+    } else {
+      out[w] = slot == kFreeSlot ? 0 : valid_bits(block, w);
+    }
+  }
+}
+
+void MapStore::feed_hash(std::uint32_t block, const std::uint64_t* words) noexcept {
+  const std::uint32_t hash_block = block / kBlocksPerHashBlock;
+  if (!hash_open_) {
+    hash_open_ = true;
+    hash_state_ = map_block_hash_seed(hash_block);
+    // A delta reaches a hash block at its first changed block; the ones before it are unchanged.
+    std::uint64_t before[kStoreBlockWords];
+    for (std::uint32_t b = hash_block * kBlocksPerHashBlock; b < block; ++b) {
+      held_words(b, before);
+      for (const std::uint64_t word : before) hash_state_ = map_hash_mix(hash_state_ ^ word);
+    }
+  }
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+    hash_state_ = map_hash_mix(hash_state_ ^ words[w]);
+  }
+  const bool last_of_map = block + 1 == layout_.blocks;
+  if (!last_of_map && (block + 1) % kBlocksPerHashBlock != 0) return;
+  if (last_of_map) {
+    // map_hash.hpp hashes whole blocks of 64 words, zero past the map's last word.
+    const std::uint32_t missing = kBlocksPerHashBlock - 1 - block % kBlocksPerHashBlock;
+    for (std::uint32_t w = 0; w < missing * kStoreBlockWords; ++w) {
+      hash_state_ = map_hash_mix(hash_state_);
+    }
+  }
+  storage_.new_hash_blocks[new_hash_count_] = hash_block;
+  storage_.new_hashes[new_hash_count_] = hash_state_;
+  ++new_hash_count_;
+  hash_open_ = false;
+}
+
+void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
+  bool none = true;
+  bool all = true;
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+    none = none && words[w] == 0;
+    all = all && words[w] == valid_bits(block, w);
+  }
+  std::uint32_t* work = storage_.slots[1 - held_];
+  const std::uint32_t old = work[block];  // the held map's: each block is stored once per update
+  std::uint32_t slot = none ? kFreeSlot : kForbiddenSlot;
+  if (!none && !all) {
+    if (is_pool_slot(old)) {
+      const std::uint64_t* held_copy = storage_.pool + std::uint64_t{old} * kStoreBlockWords;
+      bool same = true;
+      for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) same = same && held_copy[w] == words[w];
+      if (same) return;
+    }
+    if (free_count_ == 0) {
+      slot = kDegradedSlot;
+      ++pool_overflows_;
+    } else {
+      slot = storage_.free_blocks[--free_count_];
+      std::uint64_t* copy = storage_.pool + std::uint64_t{slot} * kStoreBlockWords;
+      for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) copy[w] = words[w];
+    }
+  }
+  if (slot == old) return;
+  work[block] = slot;
+  storage_.changed_blocks[changed_count_++] = block;
+}
+
+std::uint64_t MapStore::update_hash() const noexcept {
+  std::uint64_t hash = map_hash_mix(layout_.cell_count);
+  std::uint32_t next_new = 0;
+  for (std::uint32_t h = 0; h < layout_.hash_blocks; ++h) {
+    const bool changed = next_new < new_hash_count_ && storage_.new_hash_blocks[next_new] == h;
+    const std::uint64_t block_hash =
+        changed ? storage_.new_hashes[next_new++] : storage_.block_hashes[h];
+    hash = map_hash_mix(hash ^ block_hash);
+  }
+  return hash;
+}
+
+std::uint64_t MapStore::valid_bits(std::uint32_t block, std::uint32_t word) const noexcept {
+  const std::uint64_t first_cell = (std::uint64_t{block} * kStoreBlockWords + word) * 64;
+  if (first_cell + 64 <= layout_.cell_count) return cell_bits::kAllBits;
+  if (first_cell >= layout_.cell_count) return 0;
+  return (std::uint64_t{1} << (layout_.cell_count - first_cell)) - 1;
+}
+
+}  // namespace safecell
