@@ -63,8 +63,7 @@ class ControllerLink {
  public:
   static constexpr int kMaxFramesPerPoll = 64;
 
-  ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
-                 MapStore& store) noexcept;
+  ControllerLink(const ControllerLinkConfig& config, LinkPort& port, MapStore& store) noexcept;
 
   // Handles the frames waiting on the port.
   void poll(std::uint64_t now_ns) noexcept;
