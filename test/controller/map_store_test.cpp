@@ -14,6 +14,7 @@
 #include "safecell/cspace/map_assembler.hpp"
 #include "safecell/test/map_updates.hpp"
 #include "safecell/test/property.hpp"
+#include "store_receiver.hpp"
 
 namespace safecell {
 namespace {
@@ -45,33 +46,6 @@ class DenseReceiver {
   Words words_[2];
   Words hashes_[2];
   MapAssembler assembler_;
-};
-
-class StoreReceiver {
- public:
-  StoreReceiver(CellIndex cells, std::uint32_t pool_blocks)
-      : cells_(cells), host_(MapStoreLayout::of(cells, pool_blocks)) {}
-  MapOffer offer(const SentChunk& chunk, std::uint64_t capture_ns = 1) {
-    return host_.store().offer(chunk.header, chunk.runs.data(), chunk.runs.size(), capture_ns);
-  }
-  MapOffer offer_all(const std::vector<SentChunk>& chunks) {
-    MapOffer last;
-    for (const SentChunk& chunk : chunks) {
-      last = offer(chunk);
-      if (last.outcome == MapOutcome::kRefused) return last;
-    }
-    return last;
-  }
-  Words held() const {
-    Words words(cell_bits::words_for(cells_));
-    host_.store().view().copy_dense(words.data());
-    return words;
-  }
-  const MapStore& store() const { return host_.store(); }
-
- private:
-  CellIndex cells_;
-  HostMapStore host_;
 };
 
 // Every forbidden cell of `inner` is forbidden in `outer`.

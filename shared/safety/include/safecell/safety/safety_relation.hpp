@@ -23,13 +23,18 @@ namespace safecell {
 inline constexpr double kHumanWalkingSpeed_m_s = 1.6;
 inline constexpr double kHumanReachSpeed_m_s = 2.0;
 
-// Every delay between an obstacle appearing and the controller acting on it.
+// Every delay between an obstacle appearing and the robot acting on the controller's answer.
 struct ReactionDelays {
   double sensor_period_s = 0.0;  // t_s: an obstacle may appear just after an exposure
   double processing_s = 0.0;     // t_p: frames to forbidden map on the coprocessor
   double network_s = 0.0;        // t_net: map frame on the link until applied in the controller
   double watchdog_s = 0.0;       // T_wd: the robot may run on the last map until the watchdog fires
   double control_cycle_s = 0.0;  // t_cycle: the look-ahead is checked once per control cycle
+  // At run time the controller knows how old its map is: data_age_s is the measured age of the
+  // held map (exposure -> now), which contains t_s, t_p, t_net and the part of T_wd that has
+  // passed, so those are 0 then; the age is measured again every cycle, which covers the rest.
+  double data_age_s = 0.0;
+  double actuation_s = 0.0;  // from a command (a speed scale, a stop) to the robot acting on it
 };
 
 struct SafetyTiming {
