@@ -199,6 +199,7 @@ void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const F
   if (offer.outcome != MapOutcome::kRefused) return;
   ++updates_refused_;
   last_map_refusal_ = offer.refusal;
+  if (offer.refusal == MapRefusal::kHashMismatch) ++hash_mismatches_;
   // A torn update is repaired by the next delta (against the version acknowledged); a map that
   // disagrees with the sender's needs a keyframe.
   if (offer.refusal == MapRefusal::kHashMismatch || offer.refusal == MapRefusal::kBaseMismatch ||

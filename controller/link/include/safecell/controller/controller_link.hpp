@@ -86,6 +86,8 @@ class ControllerLink {
   MapRefusal last_map_refusal() const noexcept { return last_map_refusal_; }
   std::uint64_t updates_applied() const noexcept { return updates_applied_; }
   std::uint64_t updates_refused() const noexcept { return updates_refused_; }
+  // Whole updates whose map differed from the sender's: the controller stops on each (SAFETY.md).
+  std::uint64_t hash_mismatches() const noexcept { return hash_mismatches_; }
   safecell_v1_FaultCause stop_cause() const noexcept { return stop_cause_; }
 
  private:
@@ -119,6 +121,7 @@ class ControllerLink {
   MapRefusal last_map_refusal_ = MapRefusal::kNone;
   std::uint64_t updates_applied_ = 0;
   std::uint64_t updates_refused_ = 0;
+  std::uint64_t hash_mismatches_ = 0;
 
   // Scratch (static size: no heap, no large stack frames in the cycle).
   std::uint8_t datagram_[kMaxFrameBytes + 1]{};

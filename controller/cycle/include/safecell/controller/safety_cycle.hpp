@@ -1,0 +1,101 @@
+#pragma once
+// One control cycle of the controller core, in this order (each step a watchdog checkpoint):
+//
+//   read joints   RobotPort::read()
+//   poll link     frames in: map updates into the MapStore, clock echoes, stop requests
+//   look-ahead    with the map's measured age and the measured cycle period
+//   command       stop (a category per cause), or the speed scale / joint velocities
+//   report        the joint state and the held map's version back to the coprocessor
+//
+// Faults stop the robot (category 1 by default) and latch until acknowledge(): the link's
+// (no map update within T_wd, a second detected error within its window, a stop request), a
+// whole map update whose hash did not match, fewer healthy cameras than the threshold, joints
+// the robot could not read, and the watchdog's (too early, too late, overrun, flow, stalled).
+// Before a session is up and a keyframe verified the robot is held (waiting, category 2). A
+// look-ahead stop (category 2 by default) is not latched: the robot resumes when the cells ahead
+// are free again.
+// Thread context: run() from the controller's cycle task at its configured rate. Real-time: no
+// allocation, bounded by the link's kMaxFramesPerPoll frames and the look-ahead's box.
+
+#include <cstdint>
+
+#include "safecell/controller/clock_port.hpp"
+#include "safecell/controller/controller_link.hpp"
+#include "safecell/controller/look_ahead.hpp"
+#include "safecell/controller/map_store.hpp"
+#include "safecell/controller/robot_port.hpp"
+#include "safecell/controller/watchdog.hpp"
+
+namespace safecell {
+
+struct SafetyCycleConfig {
+  LookAheadConfig look_ahead;             // its control_cycle_s is the configured period
+  std::uint32_t min_healthy_cameras = 1;  // the fusion's camera threshold
+  StopCategory look_ahead_stop = StopCategory::kCategory2;
+  StopCategory fault_stop = StopCategory::kCategory1;
+};
+
+enum class CycleState : std::uint8_t { kWaiting, kMoving, kSlowed, kStopped, kFault };
+
+enum class CycleFault : std::uint8_t {
+  kNone = 0,
+  kLink,        // CycleReport::link_block says which
+  kMapRefused,  // a whole update whose hash did not match
+  kCameras,     // fewer healthy cameras than the threshold
+  kWatchdog,    // CycleReport::watchdog_fault says which
+  kJoints,      // the robot's joints could not be read
+};
+
+const char* to_string(CycleState state) noexcept;
+const char* to_string(CycleFault fault) noexcept;
+
+struct CycleReport {
+  CycleState state = CycleState::kWaiting;
+  CycleFault fault = CycleFault::kNone;  // the latched fault, the first one since acknowledge()
+  LinkBlock link_block = LinkBlock::kNone;
+  WatchdogFault watchdog_fault = WatchdogFault::kNone;
+  double speed_scale = 0.0;
+  StopCategory stop_category = StopCategory::kCategory2;  // when stopped, waiting or faulted
+  LookAheadResult look_ahead;
+  std::uint64_t map_version = 0;
+  double map_age_s = 0.0;
+  std::uint64_t start_ns = 0;
+  double period_s = 0.0;  // measured from the last cycle's start
+  RobotJoints joints;
+};
+
+class SafetyCycle {
+ public:
+  SafetyCycle(const CspaceGrid& grid, const SafetyCycleConfig& config, RobotPort& robot,
+              ClockPort& clock, ControllerLink& link, MapStore& store, Watchdog& watchdog) noexcept;
+
+  // One cycle. planned_rad_s: the motion's joint velocities at speed scale 1 this cycle (the
+  // gross-motion service's, or the robot program's), grid.joint_count() of them. With
+  // command_velocities the robot gets planned * scale as joint velocities, else the scale alone.
+  const CycleReport& run(const double* planned_rad_s, bool command_velocities) noexcept;
+
+  // An operator's acknowledgement: clears the latched faults (link, watchdog, the cycle's own)
+  // and restores the robot's power. The next cycle checks everything afresh.
+  void acknowledge() noexcept;
+
+  const CycleReport& last() const noexcept { return report_; }
+
+ private:
+  CycleFault detect_fault(const RobotJoints& joints, std::uint64_t now_ns) noexcept;
+  void command(const double* planned_rad_s, bool command_velocities) noexcept;
+
+  const CspaceGrid& grid_;
+  SafetyCycleConfig config_;
+  RobotPort& robot_;
+  ClockPort& clock_;
+  ControllerLink& link_;
+  MapStore& store_;
+  Watchdog& watchdog_;
+  LookAhead look_ahead_;
+  CycleReport report_;
+  CycleFault latched_ = CycleFault::kNone;
+  std::uint64_t hash_mismatches_seen_ = 0;
+  std::uint64_t last_start_ns_ = 0;
+};
+
+}  // namespace safecell

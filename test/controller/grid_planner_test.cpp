@@ -1,0 +1,180 @@
+// The planner against an exhaustive search (breadth-first over every free cell) on small grids:
+// it finds a path exactly when one exists, every path it gives is made of free cells one step
+// apart, and when there is none it says why.
+
+#include "safecell/controller/grid_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <sstream>
+#include <string>
+
+#include "safecell/controller/host/planner_memory.hpp"
+#include "safecell/test/property.hpp"
+#include "store_receiver.hpp"
+
+namespace safecell {
+namespace {
+
+using test::Words;
+
+CspaceGrid small_grid(std::mt19937_64& rng, std::uint32_t joints) {
+  GridSpec spec;
+  spec.m_max_m = 0.1;
+  spec.joint_count = joints;
+  for (std::uint32_t j = 0; j < joints; ++j) {
+    spec.joints[j].lo_rad = -0.5 - 0.3 * static_cast<double>(rng() % 4);
+    spec.joints[j].hi_rad = 0.5;
+    spec.joints[j].l_m = 0.3 + 0.1 * static_cast<double>(rng() % 4);
+  }
+  return CspaceGrid::create(spec).value();
+}
+
+// Breadth-first over free cells, one step along one joint: can `goal` be reached from `start`?
+bool reachable(const CspaceGrid& grid, const Words& map, CellIndex start, CellIndex goal) {
+  if (cell_bits::test(map.data(), goal)) return false;
+  std::vector<bool> seen(grid.cell_count(), false);
+  std::deque<CellIndex> queue{start};
+  seen[start] = true;
+  while (!queue.empty()) {
+    const CellIndex cell = queue.front();
+    queue.pop_front();
+    if (cell == goal) return true;
+    for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+      for (const Direction direction : {Direction::kNegative, Direction::kPositive}) {
+        const Result<CellIndex> next = grid.neighbour(cell, j, direction);
+        if (!next.ok() || seen[next.value()] || cell_bits::test(map.data(), next.value())) continue;
+        seen[next.value()] = true;
+        queue.push_back(next.value());
+      }
+    }
+  }
+  return false;
+}
+
+bool one_step_apart(const CspaceGrid& grid, CellIndex a, CellIndex b) {
+  const GridCoords ca = grid.coords_of(a).value();
+  const GridCoords cb = grid.coords_of(b).value();
+  std::uint32_t steps = 0;
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    steps += ca.along[j] > cb.along[j] ? ca.along[j] - cb.along[j] : cb.along[j] - ca.along[j];
+  }
+  return steps == 1;
+}
+
+TEST(GridPlanner, FindsAPathExactlyWhenTheExhaustiveSearchDoes) {
+  test::PropertyRun run(200);
+  int found = 0;
+  int none = 0;
+  for (int i = 0; i < run.iterations(); ++i) {
+    auto& rng = run.rng();
+    const CspaceGrid grid = small_grid(rng, 2 + static_cast<std::uint32_t>(rng() % 3));
+    const CellIndex cells = grid.cell_count();
+    Words map(cell_bits::words_for(cells), 0);
+    const double density = 0.1 + 0.4 * static_cast<double>(rng() % 100) / 100.0;
+    for (CellIndex c = 0; c < cells; ++c) {
+      if (static_cast<double>(rng() % 1000) < density * 1000) cell_bits::set(map.data(), c);
+    }
+    const auto start = static_cast<CellIndex>(rng() % cells);
+    const auto goal = static_cast<CellIndex>(rng() % cells);
+    StoreReceiver store(cells, store_blocks_for(cells) * 2);
+    hold(store, map, cells);
+    const PlannerLayout layout = PlannerLayout::for_grid(cells);
+    PlannerMemoryHost memory(layout);
+    GridPlanner planner(grid, layout, memory.memory());
+    const PlanResult result = planner.plan(store.store().view(), start, goal);
+    std::ostringstream input;
+    input << "joints " << grid.joint_count() << ", cells " << cells << ", density " << density
+          << ", start " << start << ", goal " << goal << ": " << to_string(result.status);
+    const bool exists = reachable(grid, map, start, goal);
+    if (!exists) {
+      ++none;
+      ASSERT_TRUE(result.status == PlanStatus::kNoPath ||
+                  result.status == PlanStatus::kGoalForbidden)
+          << input.str();
+      if (result.status == PlanStatus::kNoPath) {
+        ASSERT_TRUE(result.has_blocking_cell) << input.str() << ": no reason given";
+        ASSERT_TRUE(cell_bits::test(map.data(), result.blocking_cell)) << input.str();
+      }
+      continue;
+    }
+    ++found;
+    ASSERT_EQ(result.status, PlanStatus::kFound) << input.str();
+    const CellIndex* path = planner.path();
+    ASSERT_EQ(path[0], start) << input.str();
+    ASSERT_EQ(path[result.length - 1], goal) << input.str();
+    for (std::uint32_t k = 1; k < result.length; ++k) {
+      ASSERT_FALSE(cell_bits::test(map.data(), path[k])) << input.str() << ", step " << k;
+      ASSERT_TRUE(one_step_apart(grid, path[k - 1], path[k])) << input.str() << ", step " << k;
+    }
+  }
+  EXPECT_GT(found, run.iterations() / 10);
+  EXPECT_GT(none, run.iterations() / 10);
+}
+
+TEST(GridPlanner, PrefersPathsAwayFromForbiddenCells) {
+  std::mt19937_64 rng(4);
+  const CspaceGrid grid = small_grid(rng, 2);
+  const CellIndex cells = grid.cell_count();
+  // One forbidden cell beside the straight route from (0, 0) to (n0 - 1, 0): a planner that
+  // weighs clearance goes round it, one that does not passes right beside it.
+  Words map(cell_bits::words_for(cells), 0);
+  const std::uint32_t n0 = grid.cells_along(0);
+  const std::uint32_t n1 = grid.cells_along(1);
+  ASSERT_GE(n0, 5u);
+  ASSERT_GE(n1, 5u);
+  GridCoords near_route{};
+  near_route.along[0] = n0 / 2;
+  near_route.along[1] = 1;
+  cell_bits::set(map.data(), grid.index_of(near_route).value());
+  StoreReceiver store(cells, 64);
+  hold(store, map, cells);
+  const PlannerLayout layout = PlannerLayout::for_grid(cells);
+  PlannerMemoryHost memory(layout);
+  PlannerConfig wary;
+  wary.clearance_weight = 100;  // a step beside a forbidden cell costs ten steps
+  GridPlanner planner(grid, layout, memory.memory(), wary);
+  GridCoords from{};
+  GridCoords to{};
+  to.along[0] = n0 - 1;
+  const PlanResult result =
+      planner.plan(store.store().view(), grid.index_of(from).value(), grid.index_of(to).value());
+  ASSERT_EQ(result.status, PlanStatus::kFound);
+  for (std::uint32_t k = 0; k < result.length; ++k) {
+    const GridCoords at = grid.coords_of(planner.path()[k]).value();
+    const std::uint32_t d0 = at.along[0] > n0 / 2 ? at.along[0] - n0 / 2 : n0 / 2 - at.along[0];
+    const std::uint32_t d1 = at.along[1] > 1 ? at.along[1] - 1 : 1 - at.along[1];
+    EXPECT_GT(d0 + d1, 1u) << "step " << k << " passes right beside the forbidden cell";
+  }
+  EXPECT_GT(result.length, n0) << "it went round";
+  PlannerConfig blind;
+  blind.clearance_weight = 0;
+  GridPlanner blind_planner(grid, layout, memory.memory(), blind);
+  const PlanResult straight = blind_planner.plan(store.store().view(), grid.index_of(from).value(),
+                                                 grid.index_of(to).value());
+  EXPECT_EQ(straight.length, n0) << "without the clearance cost the straight route wins";
+}
+
+TEST(GridPlanner, SaysSoWhenTheGoalIsForbiddenOrMemoryRunsOut) {
+  std::mt19937_64 rng(6);
+  const CspaceGrid grid = small_grid(rng, 3);
+  const CellIndex cells = grid.cell_count();
+  Words map(cell_bits::words_for(cells), 0);
+  cell_bits::set(map.data(), cells - 1);
+  StoreReceiver store(cells, 64);
+  hold(store, map, cells);
+  PlannerLayout layout = PlannerLayout::for_grid(cells);
+  PlannerMemoryHost memory(layout);
+  GridPlanner planner(grid, layout, memory.memory());
+  const PlanResult forbidden = planner.plan(store.store().view(), 0, cells - 1);
+  EXPECT_EQ(forbidden.status, PlanStatus::kGoalForbidden);
+  EXPECT_EQ(forbidden.blocking_cell, cells - 1);
+  layout.path_capacity = 2;
+  PlannerMemoryHost small(layout);
+  GridPlanner cramped(grid, layout, small.memory());
+  EXPECT_EQ(cramped.plan(store.store().view(), 0, cells - 2).status, PlanStatus::kOutOfMemory);
+}
+
+}  // namespace
+}  // namespace safecell
