@@ -54,3 +54,22 @@ TEST(FreestandingMath, CeilAndFiniteness) {
 
 }  // namespace
 }  // namespace safecell
+
+namespace safecell {
+namespace {
+
+TEST(FreestandingMath, SqrtAgreesWithTheHostLibrary) {
+  test::PropertyRun run(2000);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const double exponent = std::uniform_real_distribution<double>(-300.0, 300.0)(run.rng());
+    const double x = std::pow(10.0, exponent);
+    ASSERT_NEAR(sqrt_of(x), std::sqrt(x), std::sqrt(x) * 4e-16) << "x = " << x;
+  }
+  EXPECT_EQ(sqrt_of(0.0), 0.0);
+  EXPECT_EQ(sqrt_of(4.0), 2.0);
+  EXPECT_TRUE(std::isnan(sqrt_of(-1.0)));
+  EXPECT_TRUE(std::isnan(sqrt_of(std::numeric_limits<double>::infinity())));
+}
+
+}  // namespace
+}  // namespace safecell

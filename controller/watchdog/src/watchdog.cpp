@@ -38,6 +38,7 @@ void Watchdog::begin_cycle(std::uint64_t now_ns) noexcept {
     if (period < config_.min_period_ns) latch(WatchdogFault::kTooEarly);
     if (period > config_.max_period_ns) latch(WatchdogFault::kTooLate);
   }
+  if (!started_) last_end_ns_ = now_ns;  // the first cycle: stalled() counts from here
   started_ = true;
   last_begin_ns_ = now_ns;
   in_cycle_ = true;
@@ -62,8 +63,7 @@ WatchdogFault Watchdog::end_cycle(std::uint64_t now_ns) noexcept {
 }
 
 WatchdogFault Watchdog::stalled(std::uint64_t now_ns) noexcept {
-  const std::uint64_t since = started_ ? last_end_ns_ : last_begin_ns_;
-  if (started_ && now_ns > since && now_ns - since > config_.max_period_ns) {
+  if (started_ && now_ns > last_end_ns_ && now_ns - last_end_ns_ > config_.max_period_ns) {
     latch(WatchdogFault::kStalled);
   }
   return fault_;

@@ -54,4 +54,23 @@ std::uint64_t ceil_to_u64(double value) noexcept {
   return truncated;
 }
 
+double sqrt_of(double x) noexcept {
+  if (!is_finite_non_negative(x)) return __builtin_nan("");
+  if (x == 0.0) return 0.0;
+  // Scale x into [1, 4) by powers of 4 so Newton starts close and converges in a few steps.
+  double scale = 1.0;
+  double y = x;
+  for (int i = 0; i < 1100 && y >= 4.0; ++i) {
+    y *= 0.25;
+    scale *= 2.0;
+  }
+  for (int i = 0; i < 1100 && y < 1.0; ++i) {
+    y *= 4.0;
+    scale *= 0.5;
+  }
+  double root = (y + 1.0) * 0.5;  // >= sqrt(y): Newton then decreases monotonically
+  for (int i = 0; i < 8; ++i) root = 0.5 * (root + y / root);
+  return root * scale;
+}
+
 }  // namespace safecell

@@ -26,6 +26,9 @@ double sin_small_rad(double angle_rad) noexcept;
 // validate; an argument outside returns NaN).
 double asin_rad(double x) noexcept;
 
+// Square root of a finite x >= 0 by Newton's method, to within an ulp or two; NaN otherwise.
+double sqrt_of(double x) noexcept;
+
 // Smallest integer >= value, for finite value in [0, 2^53]. Precondition checked by callers.
 std::uint64_t ceil_to_u64(double value) noexcept;
 

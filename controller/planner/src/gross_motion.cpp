@@ -1,0 +1,152 @@
+#include "safecell/controller/gross_motion.hpp"
+
+#include "safecell/base/freestanding_math.hpp"
+
+namespace safecell {
+namespace {
+
+double magnitude(double value) noexcept { return value < 0.0 ? -value : value; }
+
+// Cells of the path the robot may skip ahead to (it may cross a cell within one cycle).
+constexpr std::uint32_t kSearchAhead = 8;
+
+}  // namespace
+
+const char* to_string(MotionStatus status) noexcept {
+  switch (status) {
+    case MotionStatus::kIdle:
+      return "idle";
+    case MotionStatus::kMoving:
+      return "moving";
+    case MotionStatus::kBlocked:
+      return "blocked";
+    case MotionStatus::kArrived:
+      return "arrived";
+    case MotionStatus::kFailed:
+      return "failed";
+  }
+  return "unknown";
+}
+
+GrossMotion::GrossMotion(const CspaceGrid& grid, GridPlanner& planner,
+                         const GrossMotionConfig& config) noexcept
+    : grid_(grid), planner_(planner), config_(config) {}
+
+Status GrossMotion::move_to(const JointAngles& goal) noexcept {
+  const Result<CellIndex> cell = grid_.cell_containing(goal);
+  if (!cell.ok()) return cell.error();
+  goal_ = goal;
+  progress_ = MotionProgress{};
+  progress_.status = MotionStatus::kMoving;
+  progress_.goal_cell = cell.value();
+  planned_on_version_ = 0;  // plan with the next cycle's map
+  blocked_since_ns_ = 0;
+  return Status::kOk;
+}
+
+void GrossMotion::cancel() noexcept { progress_.status = MotionStatus::kIdle; }
+
+bool GrossMotion::replan(const MapView& map, CellIndex from, std::uint64_t now_ns) noexcept {
+  progress_.last_plan = planner_.plan(map, from, progress_.goal_cell);
+  ++progress_.plans;
+  if (progress_.last_plan.status == PlanStatus::kFound) {
+    progress_.status = MotionStatus::kMoving;
+    progress_.path_index = 0;
+    progress_.path_length = progress_.last_plan.length;
+    blocked_since_ns_ = 0;
+    return true;
+  }
+  progress_.path_length = 0;
+  if (blocked_since_ns_ == 0) blocked_since_ns_ = now_ns;
+  const bool gave_up =
+      now_ns - blocked_since_ns_ > static_cast<std::uint64_t>(config_.give_up_s * 1e9) ||
+      progress_.last_plan.status == PlanStatus::kInvalid;
+  progress_.status = gave_up ? MotionStatus::kFailed : MotionStatus::kBlocked;
+  return false;
+}
+
+bool GrossMotion::path_ahead_blocked(const MapView& map) const noexcept {
+  for (std::uint32_t k = progress_.path_index + 1; k < progress_.path_length; ++k) {
+    if (map.forbidden(planner_.path()[k])) return true;
+  }
+  return false;
+}
+
+bool GrossMotion::find_on_path(CellIndex cell) noexcept {
+  const std::uint32_t last = progress_.path_index + kSearchAhead < progress_.path_length
+                                 ? progress_.path_index + kSearchAhead
+                                 : progress_.path_length - 1;
+  for (std::uint32_t k = progress_.path_index; k <= last && progress_.path_length > 0; ++k) {
+    if (planner_.path()[k] == cell) {
+      progress_.path_index = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+void GrossMotion::plan_velocity(const RobotJoints& joints, const MapView& map,
+                                std::uint64_t map_version, std::uint64_t now_ns,
+                                double* planned_rad_s) noexcept {
+  for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) planned_rad_s[j] = 0.0;
+  const MotionStatus status = progress_.status;
+  if (status == MotionStatus::kIdle || status == MotionStatus::kArrived ||
+      status == MotionStatus::kFailed || map_version == 0 || !joints.valid) {
+    return;
+  }
+  JointAngles position;
+  for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) position.rad[j] = joints.position_rad[j];
+  const Result<CellIndex> here = grid_.cell_containing(position);
+  if (!here.ok()) return;  // outside the grid: the safety cycle stops the robot
+
+  const bool new_map = map_version != planned_on_version_;
+  if (status == MotionStatus::kBlocked) {
+    if (!new_map) return;
+    planned_on_version_ = map_version;
+    if (!replan(map, here.value(), now_ns)) return;
+  } else if (progress_.path_length == 0 || !find_on_path(here.value()) ||
+             (new_map && path_ahead_blocked(map))) {
+    planned_on_version_ = map_version;
+    if (!replan(map, here.value(), now_ns)) return;
+  } else if (new_map) {
+    planned_on_version_ = map_version;
+  }
+
+  // Towards the next cell's centre on the path, or the goal itself within the goal cell.
+  const bool in_goal_cell = progress_.path_index + 1 >= progress_.path_length;
+  JointAngles target = goal_;
+  if (!in_goal_cell) {
+    const GridCoords next = grid_.coords_of(planner_.path()[progress_.path_index + 1]).value();
+    const JointAngles centre = grid_.cell_centre(next).value();
+    for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
+      if (grid_.joint(j).discretised) target.rad[j] = centre.rad[j];
+    }
+  }
+  double offset[kMaxJoints] = {};
+  bool arrived = in_goal_cell;
+  for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
+    offset[j] = target.rad[j] - position.rad[j];
+    arrived = arrived && magnitude(offset[j]) <= config_.goal_tolerance_rad;
+  }
+  if (arrived) {
+    progress_.status = MotionStatus::kArrived;
+    return;
+  }
+  // All joints in step: the slowest joint (against its limit) sets the pace; into the goal, no
+  // faster than each joint can still brake on the distance left.
+  double pace = infinity();
+  for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
+    const double distance = magnitude(offset[j]);
+    if (distance == 0.0) continue;
+    double speed = config_.max_speed_rad_s[j];
+    if (in_goal_cell && config_.accel_rad_s2[j] > 0.0) {
+      const double braking = sqrt_of(2.0 * config_.accel_rad_s2[j] * distance) * 0.5;
+      if (braking < speed) speed = braking;
+    }
+    if (speed / distance < pace) pace = speed / distance;
+  }
+  if (!is_finite(pace)) return;
+  for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) planned_rad_s[j] = offset[j] * pace;
+}
+
+}  // namespace safecell
