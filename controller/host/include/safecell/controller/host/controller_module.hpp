@@ -1,0 +1,77 @@
+#pragma once
+// The Linux controller module: the freestanding core (map store, link, look-ahead, watchdog,
+// safety cycle, planner, gross-motion service) wired to POSIX backends (a UDP socket, the
+// monotonic clock) and the simulated robot, run at the configured period.
+//
+// The loop: sleep to the next period (absolute deadline, so the period does not drift), advance
+// the simulated robot to now, ask the gross-motion service for this cycle's velocities, run the
+// safety cycle, and move on through the task's goals. A latched fault holds the robot until an
+// operator acknowledges it (acknowledge(), SIGUSR1 in safecell-controller).
+// Thread context: run() on one thread; request_stop() and acknowledge() from any (atomics).
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "safecell/controller/gross_motion.hpp"
+#include "safecell/controller/host/controller_config.hpp"
+#include "safecell/controller/safety_cycle.hpp"
+
+namespace safecell {
+
+enum class TaskOutcome : std::uint8_t {
+  kCompleted,  // every goal reached
+  kFailed,     // a goal could not be reached (no path within give_up_s)
+  kStopped,    // request_stop() (SIGINT, SIGTERM)
+  kTimedOut,   // the run's duration limit passed first
+};
+
+const char* to_string(TaskOutcome outcome) noexcept;
+
+struct ModuleStatus {
+  double elapsed_s = 0.0;
+  const CycleReport* cycle = nullptr;
+  const MotionProgress* motion = nullptr;
+  std::size_t goal = 0;  // the goal being worked on (0-based)
+  std::size_t goals = 0;
+  std::uint64_t cycles = 0;
+  std::uint64_t overruns = 0;  // cycles that began later than one period after the last
+  double worst_period_ms = 0.0;
+  std::string detail;  // why the task failed, when it did
+};
+
+class ControllerModule {
+ public:
+  // Throws ControllerConfigError (configuration the core refuses) or std::runtime_error (the
+  // socket). Allocates everything the core uses here; nothing afterwards.
+  explicit ControllerModule(const ControllerConfig& config);
+  ~ControllerModule();
+  ControllerModule(const ControllerModule&) = delete;
+  ControllerModule& operator=(const ControllerModule&) = delete;
+
+  // Runs until the task ends, request_stop(), or max_duration_s (0: no limit). status() is called
+  // every status_period_s with the latest state.
+  TaskOutcome run(double max_duration_s, double status_period_s,
+                  const std::function<void(const ModuleStatus&)>& status);
+
+  void request_stop() noexcept { stop_requested_ = true; }
+  void acknowledge() noexcept { acknowledge_requested_ = true; }
+  std::uint16_t listen_port() const;
+  const ModuleStatus& status() const noexcept { return status_; }
+
+ private:
+  struct Parts;
+  ControllerConfig config_;
+  std::unique_ptr<Parts> parts_;
+  ModuleStatus status_;
+  std::atomic<bool> stop_requested_{false};
+  std::atomic<bool> acknowledge_requested_{false};
+};
+
+// One status line: time, state, speed scale, map version and age, the goal, and the reason for
+// any slow-down, stop or fault.
+std::string status_line(const ModuleStatus& status);
+
+}  // namespace safecell

@@ -1,0 +1,97 @@
+// safecell-controller: the Linux controller module. Reads its configuration, opens the link to
+// the coprocessor, runs the safety cycle on the simulated robot at the configured period and
+// works through the task's goals with the safe gross-motion service, printing its state.
+//
+// Exit codes: 0 task completed (or stopped by SIGINT/SIGTERM), 2 a configuration or setup error
+// (the message names the file, field and value), 3 a goal could not be reached, 4 the time limit
+// passed first, 70 an internal error. SIGUSR1 acknowledges a latched fault (the operator's key).
+
+#include <CLI/CLI.hpp>
+
+#include <csignal>
+#include <iostream>
+
+#include "safecell/controller/host/controller_module.hpp"
+
+namespace {
+
+safecell::ControllerModule* running = nullptr;
+
+extern "C" void on_signal(int signal) {
+  if (running == nullptr) return;
+  if (signal == SIGUSR1) {
+    running->acknowledge();
+  } else {
+    running->request_stop();
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "safecell-controller: the controller module. Holds the forbidden map it gets from the "
+      "coprocessor, checks the cells ahead of every moving joint each cycle, slows or stops the "
+      "(simulated) robot, and moves it through the task's goals on free paths. SIGUSR1 "
+      "acknowledges a latched fault."};
+  std::string config_path;
+  double duration_s = 0.0;
+  double status_hz = 5.0;
+  bool quiet = false;
+  app.add_option("--config", config_path, "the controller's YAML file (controller.example.yaml)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--duration", duration_s, "stop after this many seconds (0: run until done)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--status-hz", status_hz, "status lines per second")
+      ->check(CLI::Range(0.1, 100.0));
+  app.add_flag("--quiet", quiet, "only the final line");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : 2;  // --help is 0; a wrong option or missing file is 2
+  }
+
+  try {
+    const safecell::ControllerConfig config = safecell::load_controller_config(config_path);
+    safecell::ControllerModule module(config);
+    running = &module;
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGUSR1, on_signal);
+    std::cout << "safecell-controller: listening on " << config.link.listen.ip << ":"
+              << module.listen_port() << ", coprocessor at " << config.link.coprocessor.ip << ":"
+              << config.link.coprocessor.port << ", cycle " << config.timing.period_ms << " ms, "
+              << config.task.goals_rad.size() << " goal(s)\n";
+    const safecell::TaskOutcome outcome =
+        module.run(duration_s, 1.0 / status_hz, [quiet](const safecell::ModuleStatus& status) {
+          if (!quiet) std::cout << safecell::status_line(status) << "\n" << std::flush;
+        });
+    running = nullptr;
+    const safecell::ModuleStatus& status = module.status();
+    std::cout << "safecell-controller: " << to_string(outcome) << " after " << status.cycles
+              << " cycles (worst period " << status.worst_period_ms << " ms, late cycles "
+              << status.overruns << ")";
+    if (!status.detail.empty()) std::cout << ": " << status.detail;
+    std::cout << "\n";
+    switch (outcome) {
+      case safecell::TaskOutcome::kCompleted:
+      case safecell::TaskOutcome::kStopped:
+        return 0;
+      case safecell::TaskOutcome::kFailed:
+        return 3;
+      case safecell::TaskOutcome::kTimedOut:
+        return 4;
+    }
+    return 70;
+  } catch (const safecell::ControllerConfigError& error) {
+    std::cerr << "safecell-controller: " << error.what() << "\n";
+    return 2;
+  } catch (const std::runtime_error& error) {
+    std::cerr << "safecell-controller: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "safecell-controller: internal error: " << error.what() << "\n";
+    return 70;
+  }
+}

@@ -1,0 +1,252 @@
+#include "safecell/controller/host/controller_module.hpp"
+
+#include <time.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "safecell/controller/host/map_store_memory.hpp"
+#include "safecell/controller/host/planner_memory.hpp"
+#include "safecell/controller/host/simulated_robot.hpp"
+#include "safecell/controller/host/udp_link_port.hpp"
+
+namespace safecell {
+namespace {
+
+std::uint64_t monotonic_ns() {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  return static_cast<std::uint64_t>(now.tv_sec) * 1'000'000'000u +
+         static_cast<std::uint64_t>(now.tv_nsec);
+}
+
+void sleep_until(std::uint64_t deadline_ns) {
+  timespec at{};
+  at.tv_sec = static_cast<time_t>(deadline_ns / 1'000'000'000u);
+  at.tv_nsec = static_cast<long>(deadline_ns % 1'000'000'000u);
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &at, nullptr) != 0) {
+  }
+}
+
+class MonotonicClock final : public ClockPort {
+ public:
+  std::uint64_t now_ns() noexcept override { return monotonic_ns(); }
+};
+
+CspaceGrid grid_of(const ControllerConfig& config) {
+  const auto grid = CspaceGrid::create(config.grid);
+  if (!grid.ok()) throw ControllerConfigError(config.source + ": grid refused");
+  return grid.value();
+}
+
+}  // namespace
+
+const char* to_string(TaskOutcome outcome) noexcept {
+  switch (outcome) {
+    case TaskOutcome::kCompleted:
+      return "task completed";
+    case TaskOutcome::kFailed:
+      return "task failed";
+    case TaskOutcome::kStopped:
+      return "stopped on request";
+    case TaskOutcome::kTimedOut:
+      return "time limit reached";
+  }
+  return "unknown";
+}
+
+struct ControllerModule::Parts {
+  explicit Parts(const ControllerConfig& config)
+      : grid(grid_of(config)),
+        store(MapStoreLayout::of(grid.cell_count(), config.pool_blocks != 0
+                                                        ? config.pool_blocks
+                                                        : default_pool_blocks(grid.cell_count()))),
+        port(config.link.listen, config.link.coprocessor),
+        link(link_config(config, grid), port, store.store()),
+        robot(config.robot),
+        watchdog(watchdog_config(config)),
+        cycle(grid, cycle_config(config), robot, clock, link, store.store(), watchdog),
+        planner_layout(PlannerLayout::for_grid(grid.cell_count())),
+        planner_memory(planner_layout),
+        planner(grid, planner_layout, planner_memory.memory()),
+        motion(grid, planner, motion_config(config)) {}
+
+  static ControllerLinkConfig link_config(const ControllerConfig& config, const CspaceGrid& grid) {
+    ControllerLinkConfig out;
+    out.controller_id = config.link.controller_id;
+    out.coprocessor_id = config.link.coprocessor_id;
+    out.grid_fingerprint = grid.fingerprint();
+    out.lut_fingerprint = config.link.lut_fingerprint;
+    out.watchdog_ns = static_cast<std::uint64_t>(config.timing.watchdog_ms * 1e6);
+    out.max_data_age_ns = static_cast<std::uint64_t>(config.timing.max_data_age_ms * 1e6);
+    out.max_clock_lead_ns = static_cast<std::uint64_t>(config.timing.max_clock_lead_ms * 1e6);
+    return out;
+  }
+  static WatchdogConfig watchdog_config(const ControllerConfig& config) {
+    // Cycles may jitter by half a period either way before the window says so.
+    const double period_ns = config.timing.period_ms * 1e6;
+    return {static_cast<std::uint64_t>(period_ns * 0.5),
+            static_cast<std::uint64_t>(period_ns * 1.5),
+            static_cast<std::uint64_t>(config.timing.budget_ms * 1e6)};
+  }
+  static SafetyCycleConfig cycle_config(const ControllerConfig& config) {
+    SafetyCycleConfig out;
+    out.look_ahead.control_cycle_s = config.timing.period_ms * 1e-3;
+    out.look_ahead.actuation_s = config.robot.actuation_s;
+    out.look_ahead.human_speed_m_s = config.safety.human_speed_m_s;
+    out.look_ahead.stop = SimulatedRobot::measure_stop_model(config.robot);
+    out.look_ahead.max_cells = config.safety.max_look_ahead_cells;
+    out.min_healthy_cameras = config.safety.min_healthy_cameras;
+    out.look_ahead_stop = config.safety.look_ahead_stop;
+    out.fault_stop = config.safety.fault_stop;
+    return out;
+  }
+  static GrossMotionConfig motion_config(const ControllerConfig& config) {
+    GrossMotionConfig out;
+    for (std::uint32_t j = 0; j < config.robot.joint_count; ++j) {
+      out.max_speed_rad_s[j] = config.robot.joints[j].max_speed_rad_s;
+      out.accel_rad_s2[j] = config.robot.joints[j].accel_rad_s2;
+    }
+    return out;
+  }
+
+  CspaceGrid grid;
+  HostMapStore store;
+  UdpLinkPort port;
+  ControllerLink link;
+  SimulatedRobot robot;
+  MonotonicClock clock;
+  Watchdog watchdog;
+  SafetyCycle cycle;
+  PlannerLayout planner_layout;
+  PlannerMemoryHost planner_memory;
+  GridPlanner planner;
+  GrossMotion motion;
+};
+
+ControllerModule::ControllerModule(const ControllerConfig& config)
+    : config_(config), parts_(std::make_unique<Parts>(config)) {}
+
+ControllerModule::~ControllerModule() = default;
+
+std::uint16_t ControllerModule::listen_port() const { return parts_->port.local_port(); }
+
+TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
+                                  const std::function<void(const ModuleStatus&)>& status) {
+  Parts& p = *parts_;
+  const auto period_ns = static_cast<std::uint64_t>(config_.timing.period_ms * 1e6);
+  const std::uint64_t start = monotonic_ns();
+  p.robot.set_time_ns(start);
+  std::uint64_t deadline = start;
+  std::uint64_t next_status = start;
+  std::uint64_t last_start = 0;
+  status_ = ModuleStatus{};
+  status_.goals = config_.task.goals_rad.size();
+  const auto goal_angles = [&](std::size_t index) {
+    JointAngles goal;
+    for (std::size_t j = 0; j < config_.task.goals_rad[index].size(); ++j) {
+      goal.rad[j] = config_.task.goals_rad[index][j];
+    }
+    return goal;
+  };
+  if (status_.goals > 0) (void)p.motion.move_to(goal_angles(0));
+  double planned[kMaxJoints] = {};
+  TaskOutcome outcome = TaskOutcome::kStopped;
+  for (;;) {
+    deadline += period_ns;
+    sleep_until(deadline);
+    const std::uint64_t now = monotonic_ns();
+    if (last_start != 0) {
+      const double period_ms = static_cast<double>(now - last_start) * 1e-6;
+      if (period_ms > status_.worst_period_ms) status_.worst_period_ms = period_ms;
+      if (now - last_start > 2 * period_ns) ++status_.overruns;
+    }
+    last_start = now;
+    if (now > p.robot.time_ns()) p.robot.step(static_cast<double>(now - p.robot.time_ns()) * 1e-9);
+    if (acknowledge_requested_.exchange(false)) p.cycle.acknowledge();
+    const RobotJoints joints = p.robot.read();
+    p.motion.plan_velocity(joints, p.store.store().view(), p.store.store().version(), now, planned);
+    const CycleReport& report = p.cycle.run(planned, true);
+    ++status_.cycles;
+    status_.elapsed_s = static_cast<double>(now - start) * 1e-9;
+    status_.cycle = &report;
+    status_.motion = &p.motion.progress();
+
+    const MotionStatus motion = p.motion.progress().status;
+    bool done = false;
+    if (motion == MotionStatus::kArrived && status_.goal < status_.goals) {
+      if (++status_.goal == status_.goals && config_.task.repeat) status_.goal = 0;
+      if (status_.goal < status_.goals) {
+        (void)p.motion.move_to(goal_angles(status_.goal));
+      } else {
+        outcome = TaskOutcome::kCompleted;
+        done = true;
+      }
+    } else if (motion == MotionStatus::kFailed) {
+      const PlanResult& plan = p.motion.progress().last_plan;
+      std::ostringstream detail;
+      detail << "goal " << status_.goal + 1 << ": " << to_string(plan.status);
+      if (plan.has_blocking_cell) {
+        detail << " (blocked at cell " << plan.blocking_cell;
+        if (plan.blocked_joint != 0xFF) detail << " along joint " << plan.blocked_joint + 1;
+        detail << ", nearest reached cell " << plan.closest_cell << ")";
+      }
+      status_.detail = detail.str();
+      outcome = TaskOutcome::kFailed;
+      done = true;
+    }
+    if (!done && stop_requested_) done = true;
+    if (!done && max_duration_s > 0.0 && status_.elapsed_s >= max_duration_s) {
+      outcome = TaskOutcome::kTimedOut;
+      done = true;
+    }
+    if (status && (done || now >= next_status)) {
+      status(status_);
+      next_status = now + static_cast<std::uint64_t>(status_period_s * 1e9);
+    }
+    if (done) break;
+  }
+  // Leave the robot held (a controlled stop, power kept); the coprocessor sees the joint stream
+  // end and its own watchdog report it.
+  p.robot.stop(StopCategory::kCategory2);
+  return outcome;
+}
+
+std::string status_line(const ModuleStatus& status) {
+  std::ostringstream line;
+  line.setf(std::ios::fixed);
+  line.precision(1);
+  line << status.elapsed_s << " s";
+  if (status.cycle == nullptr) return line.str();
+  const CycleReport& cycle = *status.cycle;
+  line << " | " << to_string(cycle.state);
+  line.precision(2);
+  line << " | scale " << cycle.speed_scale;
+  line << " | map v" << cycle.map_version;
+  line.precision(0);
+  line << " age " << cycle.map_age_s * 1e3 << " ms";
+  if (status.goals > 0) {
+    line << " | goal " << (status.goal < status.goals ? status.goal + 1 : status.goals) << "/"
+         << status.goals;
+  }
+  if (status.motion != nullptr) line << " " << to_string(status.motion->status);
+  if (cycle.state == CycleState::kFault) {
+    line << " | fault: " << to_string(cycle.fault);
+    if (cycle.fault == CycleFault::kLink) line << " (" << to_string(cycle.link_block) << ")";
+    if (cycle.fault == CycleFault::kWatchdog)
+      line << " (" << to_string(cycle.watchdog_fault) << ")";
+  } else if (cycle.state == CycleState::kWaiting) {
+    line << " | " << to_string(cycle.link_block);
+  } else if (cycle.state == CycleState::kSlowed || cycle.state == CycleState::kStopped) {
+    line << " | " << to_string(cycle.look_ahead.reason);
+    if (cycle.look_ahead.critical_joint != kNoCriticalJoint) {
+      line << ", joint " << cycle.look_ahead.critical_joint + 1;
+    }
+    if (cycle.look_ahead.has_blocking_cell) line << ", cell " << cycle.look_ahead.blocking_cell;
+  }
+  if (status.overruns > 0) line << " | late cycles " << status.overruns;
+  return line.str();
+}
+
+}  // namespace safecell
