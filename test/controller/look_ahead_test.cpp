@@ -54,7 +54,8 @@ struct Sweep {
 };
 Sweep sweep(const CspaceGrid& grid, const MapView& map, const LookAheadConfig& config,
             const JointAngles& from, const double* speed_rad_s, double map_age_s) {
-  const double reaction_s = map_age_s + config.control_cycle_s + config.actuation_s;
+  const double reaction_s =
+      map_age_s + config.sensor_period_s + config.control_cycle_s + config.actuation_s;
   double reach[kMaxJoints] = {};
   for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
     if (!grid.joint(j).discretised || speed_rad_s[j] == 0.0) continue;

@@ -52,7 +52,10 @@ ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& por
       latch_(config.latch_window_ns) {}
 
 void ControllerLink::poll(std::uint64_t now_ns) noexcept {
-  for (int frame = 0; frame < kMaxFramesPerPoll; ++frame) {
+  const int limit = config_.max_frames_per_poll < 1                   ? 1
+                    : config_.max_frames_per_poll > kMaxFramesPerPoll ? kMaxFramesPerPoll
+                                                                      : config_.max_frames_per_poll;
+  for (int frame = 0; frame < limit; ++frame) {
     const std::size_t size = port_.receive(datagram_, sizeof datagram_);
     if (size == 0) return;
     handle_datagram(datagram_, size, now_ns);

@@ -55,8 +55,11 @@ MapOffer MapStore::offer(const MapChunkHeader& header, const std::uint8_t* runs,
   } else if (capture_ns < update_capture_ns_) {
     update_capture_ns_ = capture_ns;
   }
+  // One pass: the runs are checked as they are applied (a malformed chunk leaves only the
+  // working table touched, and drop() undoes that).
   const MapChunkView chunk{header.kind, header.first_cell, header.end_cell, runs, runs_size};
-  if (check_map_chunk(chunk, layout_.cell_count) != Status::kOk || !apply_runs(chunk)) {
+  if (header.first_cell > header.end_cell || header.end_cell > layout_.cell_count ||
+      (runs == nullptr && runs_size != 0) || !apply_runs(chunk)) {
     return drop(header, MapRefusal::kBadChunk);
   }
   if (inexact_) return drop(header, MapRefusal::kBaseInexact);
@@ -134,8 +137,11 @@ void MapStore::commit(std::uint64_t version, std::uint64_t hash) noexcept {
 
 bool MapStore::apply_runs(const MapChunkView& chunk) noexcept {
   RunReader reader(chunk.runs, chunk.runs_size, chunk.first_cell, chunk.end_cell);
-  for (Result<CellRun> next = reader.next(); next.ok(); next = reader.next()) {
+  for (;;) {
+    const Result<CellRun> next = reader.next();
+    if (!next.ok()) return next.error() == Status::kEmpty;  // the end, or a malformed record
     const CellRun& run = next.value();
+    if (keyframe_ && !run.value) return false;  // a keyframe only sets cells
     CellIndex cell = run.begin;
     while (cell < run.end) {
       const std::uint32_t block = cell / kStoreBlockCells;
@@ -160,7 +166,6 @@ bool MapStore::apply_runs(const MapChunkView& chunk) noexcept {
       cell = segment_end;
     }
   }
-  return true;
 }
 
 void MapStore::seek(std::uint32_t block, bool whole) noexcept {

@@ -45,6 +45,7 @@ LookAhead::LookAhead(const CspaceGrid& grid, const LookAheadConfig& config) noex
   SAFECELL_ASSERT(config.stop.valid() && config.stop.joint_count == grid.joint_count());
   SAFECELL_ASSERT(config.max_cells > 0 && is_finite_non_negative(config.control_cycle_s) &&
                   is_finite_non_negative(config.actuation_s) &&
+                  is_finite_non_negative(config.sensor_period_s) &&
                   is_finite_non_negative(config.human_speed_m_s));
   for (std::uint32_t j = 0; j < grid.joint_count(); ++j)
     geometry_[j] = joint_cell_geometry(grid, j);
@@ -55,6 +56,7 @@ SafetyTiming LookAhead::timing(double map_age_s) const noexcept {
   timing.delays.control_cycle_s = config_.control_cycle_s;
   timing.delays.actuation_s = config_.actuation_s;
   timing.delays.data_age_s = map_age_s;
+  timing.delays.sensor_period_s = config_.sensor_period_s;
   timing.human_speed_m_s = config_.human_speed_m_s;
   return timing;
 }

@@ -37,6 +37,10 @@ struct ControllerLinkConfig {
   std::uint64_t max_data_age_ns = 150'000'000;  // a frame's capture older than this is refused
   std::uint64_t max_clock_lead_ns = 5'000'000;  // the coprocessor's clock-offset uncertainty
   std::uint64_t latch_window_ns = kDefaultLatchWindowNs;
+  // Frames handled per poll() (at most kMaxFramesPerPoll): bounds the link's share of a control
+  // cycle. The rest wait in the transport's buffer for the next cycle; a large update then takes
+  // a few cycles longer, which its measured age accounts for.
+  int max_frames_per_poll = 4;
 };
 
 // The joints of one control cycle, as the controller read them.
@@ -65,7 +69,7 @@ class ControllerLink {
 
   ControllerLink(const ControllerLinkConfig& config, LinkPort& port, MapStore& store) noexcept;
 
-  // Handles the frames waiting on the port.
+  // Handles the frames waiting on the port, at most config.max_frames_per_poll of them.
   void poll(std::uint64_t now_ns) noexcept;
 
   // Sends this cycle's joint state; it carries the held map's version as the acknowledgement.

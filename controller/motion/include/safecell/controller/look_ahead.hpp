@@ -6,7 +6,8 @@
 //   the box         from the current cell along every moving joint at once, n_j cells in joint
 //                   j's direction of travel (a motion of several joints crosses diagonal cells, so
 //                   the whole box is checked, not each joint's line of cells). n_j is the relation
-//                   (shared/safety) for joint j at its speed, with the map's measured age.
+//                   (shared/safety) for joint j at its speed, with the map's measured age and
+//                   the frame period (what appears just after an exposure shows a period later).
 //   free level      L: the largest k such that every cell of the box within k cells of the
 //                   current cell (along every moving joint) is free. Joint j has F_j = min(L, n_j)
 //                   free cells for sure; past the grid's edge (a joint limit) counts as free.
@@ -33,6 +34,9 @@ namespace safecell {
 struct LookAheadConfig {
   double control_cycle_s = 0.004;  // t_cycle: the measured period; the next check is this far off
   double actuation_s = 0.0;        // from a command to the robot acting on it
+  // t_s: the coprocessor's frame period. A person may step into view just after an exposure and
+  // shows only in the next frame's map, one period later than the measured age says.
+  double sensor_period_s = 1.0 / 30.0;
   double human_speed_m_s = kHumanWalkingSpeed_m_s;
   StopModel stop;
   std::uint32_t max_cells = 24;   // look-ahead cap per joint (more needed: the scale drops)

@@ -1,0 +1,594 @@
+// safecell-controller-bench: the controller core's costs on a host core, with Google Benchmark.
+//
+//   controller_cycle   one SafetyCycle::run with a whole map delta arriving in that cycle (the
+//                      worst case: at 250 Hz a delta comes every 8th cycle or so): link frames
+//                      checked, the delta applied and verified in the map store, the look-ahead,
+//                      the watchdog, the commands and the joint report. Per-cycle times give
+//                      p50, p99 and the worst; allocations are counted by the test suite.
+//   delta_apply        MapStore::offer of every chunk of one delta
+//   planner            GridPlanner::plan between free cells of the maps (seeded pairs)
+//   map_store_memory   the store's bytes for the grid and, with m_max = 6 cm, the ~14 M-cell
+//                      grid, with the mixed blocks the maps need (upsampled to the fine grid)
+// Maps: --maps FILE (map_sequence_file.hpp; `safecell bench` passes the demo's maps) or, without
+// it, synthetic maps on the default cell's grid (a region sweeping through C-space).
+// --json prints one JSON object of the named figures after the benchmark table.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "map_sequence_file.hpp"
+#include "safecell/controller/controller_link.hpp"
+#include "safecell/controller/grid_planner.hpp"
+#include "safecell/controller/host/map_store_memory.hpp"
+#include "safecell/controller/host/planner_memory.hpp"
+#include "safecell/controller/host/simulated_robot.hpp"
+#include "safecell/controller/safety_cycle.hpp"
+#include "safecell/cspace/cell_bits.hpp"
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/cspace/map_chunk.hpp"
+#include "safecell/cspace/map_hash.hpp"
+#include "safecell/protocol/frame_checker.hpp"
+#include "safecell/protocol/nanopb_codec.hpp"
+
+namespace safecell {
+namespace {
+
+using Words = std::vector<std::uint64_t>;
+constexpr std::uint64_t kLuts = 0x1075;
+constexpr std::uint64_t kSession = 0xBE4C;
+constexpr std::size_t kRunBytes = 1376;  // map.options: MapChunk.runs max_size
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto index =
+      static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size()))) - 1;
+  return values[std::min(index, values.size() - 1)];
+}
+
+// The default cell's grid (safecell cell info), for runs without --maps.
+GridSpec default_grid() {
+  GridSpec spec;
+  spec.m_max_m = 0.18;
+  spec.joint_count = 6;
+  const double deg = 3.14159265358979323846 / 180.0;
+  const double ranges[6][2] = {{-160, 160}, {-137.5, 137.5}, {-142.5, 142.5},
+                               {-240, 240}, {-105, 120},     {-270, 270}};
+  const double l[6] = {1.524, 1.371, 0.745, 0.120, 0.119, 0.045};
+  for (std::uint32_t j = 0; j < 6; ++j) {
+    spec.joints[j] = {ranges[j][0] * deg, ranges[j][1] * deg, l[j], j < 4};
+  }
+  return spec;
+}
+
+// Synthetic maps: a ball of forbidden cells (a person) sweeping through C-space, over a slab of
+// static obstacles.
+MapSequence synthetic_maps(const GridSpec& spec, int count) {
+  const CspaceGrid grid = CspaceGrid::create(spec).value();
+  MapSequence sequence;
+  sequence.grid = spec;
+  sequence.cell_count = grid.cell_count();
+  for (int m = 0; m < count; ++m) {
+    Words map(cell_bits::words_for(grid.cell_count()), 0);
+    const double t = static_cast<double>(m) / count;
+    for (CellIndex c = 0; c < grid.cell_count(); ++c) {
+      const GridCoords at = grid.coords_of(c).value();
+      double distance = 0.0;
+      for (std::uint32_t j = 0; j < 3; ++j) {
+        const double centre = (j == 0 ? 0.2 + 0.6 * t : 0.5) * grid.cells_along(j);
+        const double d = (at.along[j] - centre) / grid.cells_along(j);
+        distance += d * d;
+      }
+      if (distance < 0.04 || at.along[1] < grid.cells_along(1) / 8) cell_bits::set(map.data(), c);
+    }
+    sequence.maps.push_back(std::move(map));
+  }
+  return sequence;
+}
+
+MapSequence& maps() {
+  static MapSequence sequence;
+  return sequence;
+}
+
+// The frames of one update, sealed as the coprocessor sends them.
+class FrameSource {
+ public:
+  explicit FrameSource(std::uint64_t grid_fingerprint)
+      : grid_(grid_fingerprint),
+        sealer_({1, 2, kSession, configuration_fingerprint(grid_fingerprint, kLuts)}) {}
+
+  std::vector<std::uint8_t> handshake(std::uint64_t now) {
+    message_ = safecell_v1_Message_init_zero;
+    message_.which_body = safecell_v1_Message_handshake_tag;
+    message_.body.handshake.protocol_version = kProtocolVersion;
+    message_.body.handshake.session_id = kSession;
+    message_.body.handshake.grid_fingerprint = grid_;
+    message_.body.handshake.lut_fingerprint = kLuts;
+    return seal(now, 0, kFrameFlagHandshake);
+  }
+
+  std::vector<std::vector<std::uint8_t>> update(const Words* base, std::uint64_t base_version,
+                                                const Words& target, std::uint64_t version,
+                                                CellIndex cells, std::uint64_t capture,
+                                                std::uint64_t now) {
+    std::vector<std::vector<std::uint8_t>> frames;
+    std::vector<safecell_v1_MapChunk> chunks;
+    CellIndex from = 0;
+    do {
+      safecell_v1_MapChunk chunk = safecell_v1_MapChunk_init_zero;
+      chunk.kind = base ? safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
+                        : safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
+      chunk.map_version = version;
+      chunk.base_version = base ? base_version : 0;
+      chunk.map_hash = map_hash(target.data(), cells);
+      chunk.chunk_index = static_cast<std::uint32_t>(chunks.size());
+      chunk.first_cell = from;
+      chunk.healthy_cameras = 4;
+      chunk.camera_count = 4;
+      std::size_t size = 0;
+      chunk.end_cell = base ? encode_delta_chunk(base->data(), target.data(), cells, from,
+                                                 chunk.runs.bytes, kRunBytes, size)
+                            : encode_keyframe_chunk(target.data(), cells, from, chunk.runs.bytes,
+                                                    kRunBytes, size);
+      chunk.runs.size = static_cast<pb_size_t>(size);
+      from = chunk.end_cell;
+      chunks.push_back(chunk);
+    } while (from < cells);
+    for (auto& chunk : chunks) {
+      chunk.chunk_count = static_cast<std::uint32_t>(chunks.size());
+      message_ = safecell_v1_Message_init_zero;
+      message_.which_body = safecell_v1_Message_map_chunk_tag;
+      message_.body.map_chunk = chunk;
+      frames.push_back(seal(now, capture));
+    }
+    return frames;
+  }
+
+ private:
+  std::vector<std::uint8_t> seal(std::uint64_t now, std::uint64_t capture, std::uint8_t flags = 0) {
+    std::uint8_t payload[kMaxPayloadBytes];
+    const Result<std::size_t> encoded = encode_message(message_, payload, sizeof payload);
+    std::vector<std::uint8_t> frame(kMaxFrameBytes);
+    const Result<std::size_t> size =
+        sealer_.seal(payload, encoded.value(), now, capture, frame.data(), frame.size(), flags);
+    frame.resize(size.value());
+    return frame;
+  }
+
+  std::uint64_t grid_;
+  FrameSealer sealer_;
+  safecell_v1_Message message_{};
+};
+
+class QueuePort final : public LinkPort {
+ public:
+  bool send(const std::uint8_t*, std::size_t) noexcept override { return true; }
+  std::size_t receive(std::uint8_t* buffer, std::size_t capacity) noexcept override {
+    if (next_ >= frames.size()) return 0;
+    const auto& frame = frames[next_++];
+    if (frame.size() > capacity) return capacity + 1;
+    std::memcpy(buffer, frame.data(), frame.size());
+    return frame.size();
+  }
+  void load(std::vector<std::vector<std::uint8_t>> loaded) {
+    frames = std::move(loaded);
+    next_ = 0;
+  }
+  std::vector<std::vector<std::uint8_t>> frames;
+
+ private:
+  std::size_t next_ = 0;
+};
+
+class VirtualClock final : public ClockPort {
+ public:
+  std::uint64_t now_ns() noexcept override { return now; }
+  std::uint64_t now = 1'000'000'000;
+};
+
+// A configuration in the first map's free space with every discretised joint planned to move.
+JointAngles free_configuration(const CspaceGrid& grid, const Words& map) {
+  std::mt19937_64 rng(3);
+  for (int attempt = 0; attempt < 100000; ++attempt) {
+    const auto cell = static_cast<CellIndex>(rng() % grid.cell_count());
+    if (!cell_bits::test(map.data(), cell)) {
+      return grid.cell_centre(grid.coords_of(cell).value()).value();
+    }
+  }
+  return grid.cell_centre(GridCoords{}).value();
+}
+
+void controller_cycle(benchmark::State& state) {
+  const MapSequence& sequence = maps();
+  const CspaceGrid grid = CspaceGrid::create(sequence.grid).value();
+  const CellIndex cells = grid.cell_count();
+  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
+  QueuePort port;
+  VirtualClock clock;
+  ControllerLinkConfig link_config;
+  link_config.grid_fingerprint = grid.fingerprint();
+  link_config.lut_fingerprint = kLuts;
+  ControllerLink link(link_config, port, store.store());
+  SimulatedRobotConfig robot_config;
+  robot_config.joint_count = grid.joint_count();
+  const JointAngles start = free_configuration(grid, sequence.maps.front());
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    robot_config.joints[j] = {grid.joint(j).lo_rad, grid.joint(j).hi_rad, 1.5, 5.0, 5.0};
+    robot_config.start_rad[j] = start.rad[j];
+  }
+  SimulatedRobot robot(robot_config);
+  Watchdog watchdog({2'000'000, 6'000'000, 1'000'000'000});
+  SafetyCycleConfig config;
+  config.look_ahead.stop = SimulatedRobot::measure_stop_model(robot_config);
+  config.min_healthy_cameras = 1;
+  SafetyCycle cycle(grid, config, robot, clock, link, store.store(), watchdog);
+  FrameSource source(grid.fingerprint());
+  // The session and the first map, untimed.
+  port.load({source.handshake(clock.now)});
+  double planned[kMaxJoints] = {};
+  for (std::uint32_t j = 0; j < 3 && j < grid.joint_count(); ++j) planned[j] = 0.5 - 0.4 * j;
+  (void)cycle.run(planned, true);
+  std::uint64_t version = 1;
+  clock.now += 4'000'000;
+  port.load(source.update(nullptr, 0, sequence.maps.front(), version, cells, clock.now - 50'000'000,
+                          clock.now));
+  (void)cycle.run(planned, true);
+  std::vector<double> cycle_us;
+  std::size_t next = 1;
+  std::size_t lines = 0;
+  std::size_t frames = 0;
+  for (auto _ : state) {
+    clock.now += 4'000'000;
+    const std::size_t from = next - 1 < sequence.maps.size() ? next - 1 : 0;
+    const std::size_t to = next % sequence.maps.size();
+    port.load(source.update(&sequence.maps[from], version, sequence.maps[to], version + 1, cells,
+                            clock.now - 50'000'000, clock.now));
+    frames += port.frames.size();
+    const auto begin = std::chrono::steady_clock::now();
+    const CycleReport& report = cycle.run(planned, true);
+    const auto end = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(end - begin).count();
+    state.SetIterationTime(seconds);
+    cycle_us.push_back(seconds * 1e6);
+    lines += report.look_ahead.lines_checked;
+    if (store.store().version() == version + 1) ++version;
+    next = to + 1;
+    robot.set_time_ns(clock.now);
+  }
+  state.counters["p50_us"] = percentile(cycle_us, 0.5);
+  state.counters["p99_us"] = percentile(cycle_us, 0.99);
+  state.counters["worst_us"] = percentile(cycle_us, 1.0);
+  state.counters["maps_applied"] = static_cast<double>(version);
+  state.counters["frames_per_cycle"] =
+      static_cast<double>(frames) / static_cast<double>(cycle_us.empty() ? 1 : cycle_us.size());
+  state.counters["box_lines_per_cycle"] =
+      static_cast<double>(lines) / static_cast<double>(cycle_us.empty() ? 1 : cycle_us.size());
+}
+
+// The chunks of every delta of the sequence, as the store sees them (no link).
+struct SentDelta {
+  std::vector<MapChunkHeader> headers;
+  std::vector<std::vector<std::uint8_t>> runs;
+};
+
+SentDelta delta_of(const Words& base, std::uint64_t base_version, const Words& target,
+                   std::uint64_t version, CellIndex cells, bool keyframe) {
+  SentDelta delta;
+  CellIndex from = 0;
+  do {
+    MapChunkHeader header;
+    header.kind = keyframe ? MapChunkKind::kKeyframe : MapChunkKind::kDelta;
+    header.map_version = version;
+    header.base_version = keyframe ? 0 : base_version;
+    header.map_hash = map_hash(target.data(), cells);
+    header.chunk_index = static_cast<std::uint32_t>(delta.headers.size());
+    header.first_cell = from;
+    std::vector<std::uint8_t> runs(kRunBytes);
+    std::size_t size = 0;
+    header.end_cell =
+        keyframe ? encode_keyframe_chunk(target.data(), cells, from, runs.data(), runs.size(), size)
+                 : encode_delta_chunk(base.data(), target.data(), cells, from, runs.data(),
+                                      runs.size(), size);
+    runs.resize(size);
+    from = header.end_cell;
+    delta.headers.push_back(header);
+    delta.runs.push_back(std::move(runs));
+  } while (from < cells);
+  for (auto& header : delta.headers)
+    header.chunk_count = static_cast<std::uint32_t>(delta.headers.size());
+  return delta;
+}
+
+void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence, CellIndex cells) {
+  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
+  const SentDelta first = delta_of(sequence.front(), 0, sequence.front(), 1, cells, true);
+  for (std::size_t c = 0; c < first.headers.size(); ++c) {
+    (void)store.store().offer(first.headers[c], first.runs[c].data(), first.runs[c].size(), 1);
+  }
+  std::uint64_t version = 1;
+  std::size_t held = 0;
+  std::vector<double> apply_us;
+  for (auto _ : state) {
+    const std::size_t to = (held + 1) % sequence.size();
+    const SentDelta delta =
+        delta_of(sequence[held], version, sequence[to], version + 1, cells, false);
+    const auto begin = std::chrono::steady_clock::now();
+    MapOffer offer;
+    for (std::size_t c = 0; c < delta.headers.size(); ++c) {
+      offer = store.store().offer(delta.headers[c], delta.runs[c].data(), delta.runs[c].size(), 1);
+    }
+    const auto end = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(end - begin).count();
+    state.SetIterationTime(seconds);
+    apply_us.push_back(seconds * 1e6);
+    if (offer.outcome != MapOutcome::kApplied) {
+      state.SkipWithError("a delta of the sequence was refused");
+      return;
+    }
+    ++version;
+    held = to;
+  }
+  state.counters["p50_us"] = percentile(apply_us, 0.5);
+  state.counters["p99_us"] = percentile(apply_us, 0.99);
+  state.counters["worst_us"] = percentile(apply_us, 1.0);
+}
+
+void delta_apply(benchmark::State& state) { delta_apply_on(state, maps().maps, maps().cell_count); }
+
+void planner(benchmark::State& state) {
+  const MapSequence& sequence = maps();
+  const CspaceGrid grid = CspaceGrid::create(sequence.grid).value();
+  const CellIndex cells = grid.cell_count();
+  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
+  const SentDelta key = delta_of(sequence.maps.back(), 0, sequence.maps.back(), 1, cells, true);
+  for (std::size_t c = 0; c < key.headers.size(); ++c) {
+    (void)store.store().offer(key.headers[c], key.runs[c].data(), key.runs[c].size(), 1);
+  }
+  const PlannerLayout layout = PlannerLayout::for_grid(cells);
+  PlannerMemoryHost memory(layout);
+  GridPlanner planner(grid, layout, memory.memory());
+  std::mt19937_64 rng(11);
+  std::vector<double> plan_ms;
+  double found = 0;
+  for (auto _ : state) {
+    CellIndex start = 0;
+    CellIndex goal = 0;
+    do {
+      start = static_cast<CellIndex>(rng() % cells);
+      goal = static_cast<CellIndex>(rng() % cells);
+    } while (store.store().view().forbidden(start) || store.store().view().forbidden(goal));
+    const auto begin = std::chrono::steady_clock::now();
+    const PlanResult result = planner.plan(store.store().view(), start, goal);
+    const auto end = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(end - begin).count();
+    state.SetIterationTime(seconds);
+    plan_ms.push_back(seconds * 1e3);
+    found += result.status == PlanStatus::kFound ? 1 : 0;
+  }
+  state.counters["p50_ms"] = percentile(plan_ms, 0.5);
+  state.counters["worst_ms"] = percentile(plan_ms, 1.0);
+  state.counters["found_share"] = found / static_cast<double>(plan_ms.size());
+  state.counters["planner_bytes"] = static_cast<double>(layout.bytes());
+}
+
+// The sequence's maps on a finer grid: every fine cell takes the value of the coarse cell its
+// centre lies in.
+std::vector<Words> upsampled(const MapSequence& sequence, const CspaceGrid& coarse,
+                             const CspaceGrid& fine, std::size_t count) {
+  std::vector<std::vector<std::uint32_t>> along(fine.joint_count());
+  for (std::uint32_t j = 0; j < fine.joint_count(); ++j) {
+    for (std::uint32_t i = 0; i < fine.cells_along(j); ++i) {
+      const double centre = fine.joint(j).lo_rad + (i + 0.5) * fine.cell_width_rad(j);
+      const auto coarse_i =
+          static_cast<std::uint32_t>((centre - coarse.joint(j).lo_rad) / coarse.cell_width_rad(j));
+      along[j].push_back(std::min(coarse_i, coarse.cells_along(j) - 1));
+    }
+  }
+  std::vector<Words> maps;
+  for (std::size_t m = 0; m < count && m < sequence.maps.size(); ++m) {
+    const Words& source = sequence.maps[m * (sequence.maps.size() / count)];
+    Words map(cell_bits::words_for(fine.cell_count()), 0);
+    GridCoords at{};
+    for (CellIndex c = 0; c < fine.cell_count(); ++c) {
+      CellIndex coarse_cell = 0;
+      for (std::uint32_t j = 0; j < fine.joint_count(); ++j) {
+        coarse_cell += along[j][at.along[j]] * coarse.stride(j);
+      }
+      if (cell_bits::test(source.data(), coarse_cell)) cell_bits::set(map.data(), c);
+      for (std::uint32_t j = 0; j < fine.joint_count(); ++j) {
+        if (++at.along[j] < fine.cells_along(j)) break;
+        at.along[j] = 0;
+      }
+    }
+    maps.push_back(std::move(map));
+  }
+  return maps;
+}
+
+// Holds each map as a keyframe and reports the largest number of mixed and degraded blocks.
+void hold_all(const std::vector<Words>& sequence, CellIndex cells, std::uint32_t pool,
+              double& mixed, double& degraded) {
+  HostMapStore store(MapStoreLayout::of(cells, pool));
+  std::uint64_t version = 0;
+  for (const Words& map : sequence) {
+    const SentDelta key = delta_of(map, 0, map, ++version, cells, true);
+    for (std::size_t c = 0; c < key.headers.size(); ++c) {
+      (void)store.store().offer(key.headers[c], key.runs[c].data(), key.runs[c].size(), 1);
+    }
+    mixed = std::max(mixed, static_cast<double>(store.store().mixed_blocks()));
+    degraded = std::max(degraded, static_cast<double>(store.store().degraded_blocks()));
+  }
+}
+
+GridSpec fine_grid(const GridSpec& spec) {
+  GridSpec fine = spec;
+  fine.m_max_m = 0.06;
+  return fine;
+}
+
+}  // namespace
+const GridSpec& maps_spec();
+namespace {
+
+const std::vector<Words>& fine_maps() {
+  static const std::vector<Words> fine = [] {
+    const CspaceGrid coarse_grid = CspaceGrid::create(maps_spec()).value();
+    const CspaceGrid fine_grid_ = CspaceGrid::create(fine_grid(maps_spec())).value();
+    return upsampled(maps(), coarse_grid, fine_grid_, 4);
+  }();
+  return fine;
+}
+
+void map_store_memory(benchmark::State& state) {
+  const MapSequence& sequence = maps();
+  const CellIndex cells = sequence.cell_count;
+  const CspaceGrid fine = CspaceGrid::create(fine_grid(sequence.grid)).value();
+  double mixed = 0;
+  double degraded = 0;
+  double fine_mixed = 0;
+  double fine_degraded = 0;
+  for (auto _ : state) {
+    mixed = degraded = fine_mixed = fine_degraded = 0;
+    hold_all(sequence.maps, cells, default_pool_blocks(cells), mixed, degraded);
+    hold_all(fine_maps(), fine.cell_count(), default_pool_blocks(fine.cell_count()), fine_mixed,
+             fine_degraded);
+  }
+  const MapStoreLayout layout = MapStoreLayout::of(cells, default_pool_blocks(cells));
+  const MapStoreLayout fine_layout =
+      MapStoreLayout::of(fine.cell_count(), default_pool_blocks(fine.cell_count()));
+  state.counters["cells"] = cells;
+  state.counters["map_store_bytes"] = static_cast<double>(layout.bytes());
+  state.counters["dense_double_buffer_bytes"] = 2.0 * cell_bits::words_for(cells) * 8;
+  state.counters["blocks"] = layout.blocks;
+  state.counters["mixed_blocks_max"] = mixed;
+  state.counters["degraded_blocks_max"] = degraded;
+  state.counters["fine_cells"] = fine.cell_count();
+  state.counters["fine_map_store_bytes"] = static_cast<double>(fine_layout.bytes());
+  state.counters["fine_dense_double_buffer_bytes"] =
+      2.0 * cell_bits::words_for(fine.cell_count()) * 8;
+  state.counters["fine_blocks"] = fine_layout.blocks;
+  state.counters["fine_mixed_blocks_max"] = fine_mixed;
+  state.counters["fine_degraded_blocks_max"] = fine_degraded;
+}
+
+void delta_apply_fine(benchmark::State& state) {
+  const CspaceGrid fine = CspaceGrid::create(fine_grid(maps().grid)).value();
+  delta_apply_on(state, fine_maps(), fine.cell_count());
+}
+
+// Keeps the counters of every run.
+class CounterCollector final : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      for (const auto& [name, counter] : run.counters) {
+        counters_[run.run_name.function_name + "." + name] = counter.value;
+      }
+    }
+  }
+  double get(const std::string& key) const {
+    const auto found = counters_.find(key);
+    return found == counters_.end() ? -1.0 : found->second;
+  }
+
+ private:
+  std::map<std::string, double> counters_;
+};
+
+}  // namespace
+
+const GridSpec& maps_spec() { return maps().grid; }
+
+}  // namespace safecell
+
+int main(int argc, char** argv) {
+  using namespace safecell;
+  std::string maps_path;
+  bool json = false;
+  std::vector<char*> rest{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument.rfind("--maps=", 0) == 0) {
+      maps_path = argument.substr(7);
+    } else if (argument == "--json") {
+      json = true;
+    } else if (argument == "--help" || argument == "-h") {
+      std::cout << "safecell-controller-bench [--maps=FILE] [--json] [Google Benchmark flags]\n"
+                   "  --maps=FILE  the maps to run on (written by `safecell bench`); default:\n"
+                   "               synthetic maps on the default cell's grid\n"
+                   "  --json       one JSON object of the named figures at the end\n";
+      return 0;
+    } else {
+      rest.push_back(argv[i]);
+    }
+  }
+  try {
+    maps() = maps_path.empty() ? synthetic_maps(default_grid(), 30) : read_map_sequence(maps_path);
+  } catch (const std::exception& error) {
+    std::cerr << "safecell-controller-bench: " << error.what() << "\n";
+    return 2;
+  }
+  benchmark::RegisterBenchmark("controller_cycle", controller_cycle)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("delta_apply", delta_apply)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("delta_apply_fine_grid", delta_apply_fine)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("planner", planner)->UseManualTime()->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("map_store_memory", map_store_memory)
+      ->Iterations(1)
+      ->Unit(benchmark::kMillisecond);
+  int count = static_cast<int>(rest.size());
+  benchmark::Initialize(&count, rest.data());
+  CounterCollector collector;
+  benchmark::RunSpecifiedBenchmarks(&collector);
+  if (json) {
+    const std::pair<const char*, const char*> figures[] = {
+        {"controller_cycle_p50_us", "controller_cycle.p50_us"},
+        {"controller_cycle_p99_us", "controller_cycle.p99_us"},
+        {"controller_cycle_worst_us", "controller_cycle.worst_us"},
+        {"delta_apply_us", "delta_apply.p50_us"},
+        {"delta_apply_p99_us", "delta_apply.p99_us"},
+        {"delta_apply_worst_us", "delta_apply.worst_us"},
+        {"delta_apply_14m_us", "delta_apply_fine_grid.p50_us"},
+        {"delta_apply_14m_worst_us", "delta_apply_fine_grid.worst_us"},
+        {"planner_ms", "planner.p50_ms"},
+        {"planner_worst_ms", "planner.worst_ms"},
+        {"planner_bytes", "planner.planner_bytes"},
+        {"map_store_bytes", "map_store_memory.map_store_bytes"},
+        {"map_store_dense_bytes", "map_store_memory.dense_double_buffer_bytes"},
+        {"map_store_mixed_blocks_max", "map_store_memory.mixed_blocks_max"},
+        {"map_store_blocks", "map_store_memory.blocks"},
+        {"map_store_degraded_blocks_max", "map_store_memory.degraded_blocks_max"},
+        {"map_store_14m_cells", "map_store_memory.fine_cells"},
+        {"map_store_14m_bytes", "map_store_memory.fine_map_store_bytes"},
+        {"map_store_14m_dense_bytes", "map_store_memory.fine_dense_double_buffer_bytes"},
+        {"map_store_14m_blocks", "map_store_memory.fine_blocks"},
+        {"map_store_14m_mixed_blocks_max", "map_store_memory.fine_mixed_blocks_max"},
+        {"map_store_14m_degraded_blocks_max", "map_store_memory.fine_degraded_blocks_max"},
+    };
+    std::printf("{");
+    bool first = true;
+    for (const auto& [key, counter] : figures) {
+      std::printf("%s\n  \"%s\": %.6g", first ? "" : ",", key, collector.get(counter));
+      first = false;
+    }
+    std::printf("\n}\n");
+  }
+  return 0;
+}
