@@ -5,7 +5,8 @@
 // allows (just after an exposure, just beyond the look-ahead the robot's speed needs) and grows
 // towards it at a walking person's speed, while the maps reach the controller late. The robot must
 // never enter a cell that is forbidden at that moment. Negative control: the same scenarios with a
-// look-ahead that leaves the person's speed out of the relation must let the robot in.
+// look-ahead that leaves the person's speed and the frame period out of the relation must let
+// the robot in.
 
 #include <gtest/gtest.h>
 

@@ -96,10 +96,9 @@ TEST(MapStore, StartsWithNoMapAndEverythingForbidden) {
 TEST(MapStore, LayoutIsSizedFromTheGridAndPool) {
   const MapStoreLayout layout = MapStoreLayout::of(186480, 200);
   EXPECT_EQ(layout.blocks, 365u);  // 186480 / 512 rounded up
-  EXPECT_EQ(layout.hash_blocks, 46u);
-  EXPECT_EQ(layout.bytes(), 365u * 12 + 200u * 68 + 46u * 20);
+  EXPECT_EQ(layout.bytes(), 365u * 28 + 200u * 68);
   EXPECT_EQ(default_pool_blocks(186480), 730u);
-  EXPECT_EQ(default_pool_blocks(16'000'000), 15625u);
+  EXPECT_EQ(default_pool_blocks(16'000'000), 46875u);
   EXPECT_EQ(default_pool_blocks(100), 16u);
 }
 

@@ -7,7 +7,8 @@ Run: python3 test/cspace/map_hash_reference.py
 """
 
 MASK = (1 << 64) - 1
-BLOCK_CELLS = 4096
+BLOCK_CELLS = 512
+BLOCK_WORDS = BLOCK_CELLS // 64
 
 
 def mix(x):
@@ -22,23 +23,24 @@ def mix(x):
 def map_hash(cells, cell_count):
     """cells: the set of forbidden cell indices."""
     blocks = (cell_count + BLOCK_CELLS - 1) // BLOCK_CELLS
-    h = mix(cell_count)
+    combined = 0
     for b in range(blocks):
         k = mix(b + 1)
-        for w in range(64):
+        for w in range(BLOCK_WORDS):
             word = 0
             for bit in range(64):
                 if b * BLOCK_CELLS + w * 64 + bit in cells:
                     word |= 1 << bit
             k = mix(k ^ word)
-        h = mix(h ^ k)
-    return h
+        combined ^= k
+    return mix(mix(cell_count) ^ combined)
 
 
 VECTORS = [
     ("one free cell", set(), 1),
     ("100 cells: 0, 5..9, 99", {0, 5, 6, 7, 8, 9, 99}, 100),
     ("10000 cells: 4090..4199, 9999", set(range(4090, 4200)) | {9999}, 10000),
+    ("1000 cells: 500..524", set(range(500, 525)), 1000),
     ("4096 cells, all forbidden", set(range(4096)), 4096),
 ]
 

@@ -17,22 +17,41 @@ using Words = std::vector<std::uint64_t>;
 
 TEST(MapHash, TestVectors) {
   Words one(1, 0);
-  EXPECT_EQ(map_hash(one.data(), 1), 0x2A106291D317D81Bull);
+  EXPECT_EQ(map_hash(one.data(), 1), 0xC0EE9E8082515CB5ull);
 
   Words hundred(cell_bits::words_for(100), 0);
   cell_bits::set(hundred.data(), 0);
   cell_bits::set_range(hundred.data(), 5, 10);
   cell_bits::set(hundred.data(), 99);
-  EXPECT_EQ(map_hash(hundred.data(), 100), 0xEF0E2F9EF4C41E07ull);
+  EXPECT_EQ(map_hash(hundred.data(), 100), 0xF1FB76E20CE07441ull);
 
   Words three_blocks(cell_bits::words_for(10000), 0);
   cell_bits::set_range(three_blocks.data(), 4090, 4200);
   cell_bits::set(three_blocks.data(), 9999);
-  EXPECT_EQ(map_hash(three_blocks.data(), 10000), 0x6901E75F9BC7A0F7ull);
+  EXPECT_EQ(map_hash(three_blocks.data(), 10000), 0xB8E65574F96A367Cull);
+
+  Words partial(cell_bits::words_for(1000), 0);
+  cell_bits::set_range(partial.data(), 500, 525);
+  EXPECT_EQ(map_hash(partial.data(), 1000), 0xC49A16A9262C7690ull);
 
   Words full(cell_bits::words_for(4096), 0);
   cell_bits::set_range(full.data(), 0, 4096);
-  EXPECT_EQ(map_hash(full.data(), 4096), 0x21225BCB46D0D59Bull);
+  EXPECT_EQ(map_hash(full.data(), 4096), 0x9330255D048C73D4ull);
+}
+
+// Block hashes are combined by XOR; each is keyed by its block's index, so equal blocks neither
+// cancel nor trade places unnoticed.
+TEST(MapHash, EqualBlocksNeitherCancelNorSwap) {
+  constexpr CellIndex kCells = 2048;
+  Words empty(cell_bits::words_for(kCells), 0);
+  Words first = empty;
+  cell_bits::set_range(first.data(), 10, 20);
+  Words second = empty;
+  cell_bits::set_range(second.data(), 512 + 10, 512 + 20);
+  Words both = first;
+  cell_bits::set_range(both.data(), 512 + 10, 512 + 20);
+  EXPECT_NE(map_hash(first.data(), kCells), map_hash(second.data(), kCells));
+  EXPECT_NE(map_hash(both.data(), kCells), map_hash(empty.data(), kCells));
 }
 
 TEST(MapHash, OneCellOrTheCellCountChangesIt) {

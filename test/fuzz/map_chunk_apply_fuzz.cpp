@@ -29,9 +29,8 @@ struct StoreMemory {
   std::uint64_t pool[kStoreLayout.pool_blocks * kStoreBlockWords];
   std::uint32_t free_blocks[kStoreLayout.pool_blocks];
   std::uint32_t changed_blocks[kStoreLayout.blocks];
-  std::uint64_t block_hashes[kStoreLayout.hash_blocks];
-  std::uint64_t new_hashes[kStoreLayout.hash_blocks];
-  std::uint32_t new_hash_blocks[kStoreLayout.hash_blocks];
+  std::uint64_t changed_hashes[kStoreLayout.blocks];
+  std::uint64_t block_hashes[kStoreLayout.blocks];
 };
 
 }  // namespace
@@ -45,9 +44,8 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
                                 memory.pool,
                                 memory.free_blocks,
                                 memory.changed_blocks,
-                                memory.block_hashes,
-                                memory.new_hashes,
-                                memory.new_hash_blocks});
+                                memory.changed_hashes,
+                                memory.block_hashes});
   // A first map to hold: cells 100..199 forbidden, version 1.
   {
     std::uint64_t target[kWords] = {};

@@ -1,10 +1,13 @@
 // safecell-controller-bench: the controller core's costs on a host core, with Google Benchmark.
 //
-//   controller_cycle   one SafetyCycle::run with a whole map delta arriving in that cycle (the
-//                      worst case: at 250 Hz a delta comes every 8th cycle or so): link frames
-//                      checked, the delta applied and verified in the map store, the look-ahead,
-//                      the watchdog, the commands and the joint report. Per-cycle times give
-//                      p50, p99 and the worst; allocations are counted by the test suite.
+//   controller_cycle   SafetyCycle::run at 250 Hz with a map delta every 8th cycle (maps at
+//                      30 Hz), at most 4 frames per cycle: link frames checked, the delta applied
+//                      and verified in the map store, the look-ahead, the watchdog, the commands
+//                      and the joint report. Per-cycle times give p50, p99 and the worst (the
+//                      test suite proves no allocation).
+//     _every_delta     the same with a delta arriving in every cycle (the worst cadence)
+//     _one_frame       a delta in every cycle and at most one frame per cycle (the bound a
+//                      controller with a tighter cycle budget would configure)
 //   delta_apply        MapStore::offer of every chunk of one delta
 //   planner            GridPlanner::plan between free cells of the maps (seeded pairs)
 //   map_store_memory   the store's bytes for the grid and, with m_max = 6 cm, the ~14 M-cell
@@ -209,7 +212,8 @@ JointAngles free_configuration(const CspaceGrid& grid, const Words& map) {
   return grid.cell_centre(GridCoords{}).value();
 }
 
-void controller_cycle(benchmark::State& state) {
+// delta_every: a delta arrives every this many cycles (8: maps at 30 Hz, the cycle at 250 Hz).
+void controller_cycle_with(benchmark::State& state, int delta_every, int frames_per_poll) {
   const MapSequence& sequence = maps();
   const CspaceGrid grid = CspaceGrid::create(sequence.grid).value();
   const CellIndex cells = grid.cell_count();
@@ -219,6 +223,7 @@ void controller_cycle(benchmark::State& state) {
   ControllerLinkConfig link_config;
   link_config.grid_fingerprint = grid.fingerprint();
   link_config.lut_fingerprint = kLuts;
+  link_config.max_frames_per_poll = frames_per_poll;
   ControllerLink link(link_config, port, store.store());
   SimulatedRobotConfig robot_config;
   robot_config.joint_count = grid.joint_count();
@@ -248,13 +253,20 @@ void controller_cycle(benchmark::State& state) {
   std::size_t next = 1;
   std::size_t lines = 0;
   std::size_t frames = 0;
+  std::uint64_t cycle_count = 0;
   for (auto _ : state) {
     clock.now += 4'000'000;
-    const std::size_t from = next - 1 < sequence.maps.size() ? next - 1 : 0;
-    const std::size_t to = next % sequence.maps.size();
-    port.load(source.update(&sequence.maps[from], version, sequence.maps[to], version + 1, cells,
-                            clock.now - 50'000'000, clock.now));
-    frames += port.frames.size();
+    // A new delta when the last one is in (frames left over from a bounded poll come first).
+    if (++cycle_count % static_cast<std::uint64_t>(delta_every) == 0 &&
+        store.store().version() == version) {
+      const std::size_t from = next - 1 < sequence.maps.size() ? next - 1 : 0;
+      const std::size_t to = next % sequence.maps.size();
+      auto update = source.update(&sequence.maps[from], version, sequence.maps[to], version + 1,
+                                  cells, clock.now - 50'000'000, clock.now);
+      frames += update.size();
+      port.load(std::move(update));
+      next = to + 1;
+    }
     const auto begin = std::chrono::steady_clock::now();
     const CycleReport& report = cycle.run(planned, true);
     const auto end = std::chrono::steady_clock::now();
@@ -263,15 +275,14 @@ void controller_cycle(benchmark::State& state) {
     cycle_us.push_back(seconds * 1e6);
     lines += report.look_ahead.lines_checked;
     if (store.store().version() == version + 1) ++version;
-    next = to + 1;
     robot.set_time_ns(clock.now);
   }
   state.counters["p50_us"] = percentile(cycle_us, 0.5);
   state.counters["p99_us"] = percentile(cycle_us, 0.99);
   state.counters["worst_us"] = percentile(cycle_us, 1.0);
   state.counters["maps_applied"] = static_cast<double>(version);
-  state.counters["frames_per_cycle"] =
-      static_cast<double>(frames) / static_cast<double>(cycle_us.empty() ? 1 : cycle_us.size());
+  state.counters["frames_per_delta"] =
+      static_cast<double>(frames) / static_cast<double>(version > 1 ? version - 1 : 1);
   state.counters["box_lines_per_cycle"] =
       static_cast<double>(lines) / static_cast<double>(cycle_us.empty() ? 1 : cycle_us.size());
 }
@@ -309,6 +320,10 @@ SentDelta delta_of(const Words& base, std::uint64_t base_version, const Words& t
     header.chunk_count = static_cast<std::uint32_t>(delta.headers.size());
   return delta;
 }
+
+void controller_cycle(benchmark::State& state) { controller_cycle_with(state, 8, 4); }
+void controller_cycle_every_delta(benchmark::State& state) { controller_cycle_with(state, 1, 4); }
+void controller_cycle_one_frame(benchmark::State& state) { controller_cycle_with(state, 1, 1); }
 
 void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence, CellIndex cells) {
   HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
@@ -543,6 +558,12 @@ int main(int argc, char** argv) {
   benchmark::RegisterBenchmark("controller_cycle", controller_cycle)
       ->UseManualTime()
       ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("controller_cycle_every_delta", controller_cycle_every_delta)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("controller_cycle_one_frame", controller_cycle_one_frame)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("delta_apply", delta_apply)
       ->UseManualTime()
       ->Unit(benchmark::kMicrosecond);
@@ -562,6 +583,12 @@ int main(int argc, char** argv) {
         {"controller_cycle_p50_us", "controller_cycle.p50_us"},
         {"controller_cycle_p99_us", "controller_cycle.p99_us"},
         {"controller_cycle_worst_us", "controller_cycle.worst_us"},
+        {"controller_cycle_every_delta_p50_us", "controller_cycle_every_delta.p50_us"},
+        {"controller_cycle_every_delta_p99_us", "controller_cycle_every_delta.p99_us"},
+        {"controller_cycle_every_delta_worst_us", "controller_cycle_every_delta.worst_us"},
+        {"controller_cycle_one_frame_p99_us", "controller_cycle_one_frame.p99_us"},
+        {"controller_cycle_one_frame_worst_us", "controller_cycle_one_frame.worst_us"},
+        {"controller_frames_per_delta", "controller_cycle.frames_per_delta"},
         {"delta_apply_us", "delta_apply.p50_us"},
         {"delta_apply_p99_us", "delta_apply.p99_us"},
         {"delta_apply_worst_us", "delta_apply.worst_us"},
@@ -582,7 +609,7 @@ int main(int argc, char** argv) {
         {"map_store_14m_mixed_blocks_max", "map_store_memory.fine_mixed_blocks_max"},
         {"map_store_14m_degraded_blocks_max", "map_store_memory.fine_degraded_blocks_max"},
     };
-    std::printf("{");
+    std::printf("\n{");
     bool first = true;
     for (const auto& [key, counter] : figures) {
       std::printf("%s\n  \"%s\": %.6g", first ? "" : ",", key, collector.get(counter));

@@ -4,31 +4,30 @@
 #include "safecell/cspace/run_coding.hpp"
 
 namespace safecell {
-namespace {
-
-constexpr std::uint32_t kBlocksPerHashBlock = kMapHashBlockCells / kStoreBlockCells;
-static_assert(kMapHashBlockCells % kStoreBlockCells == 0, "store blocks tile the hash blocks");
-
-}  // namespace
+static_assert(kMapHashBlockCells == kStoreBlockCells, "the store hashes the blocks it stores");
 
 MapStore::MapStore(const MapStoreLayout& layout, const MapStoreStorage& storage) noexcept
     : layout_(layout), storage_(storage) {
-  SAFECELL_ASSERT(layout.cell_count > 0 && layout.blocks == store_blocks_for(layout.cell_count) &&
-                  layout.hash_blocks == map_hash_blocks(layout.cell_count));
+  SAFECELL_ASSERT(layout.cell_count > 0 && layout.blocks == store_blocks_for(layout.cell_count));
   SAFECELL_ASSERT(storage.slots[0] != nullptr && storage.slots[1] != nullptr &&
-                  storage.changed_blocks != nullptr && storage.block_hashes != nullptr &&
-                  storage.new_hashes != nullptr && storage.new_hash_blocks != nullptr);
+                  storage.changed_blocks != nullptr && storage.changed_hashes != nullptr &&
+                  storage.block_hashes != nullptr);
   SAFECELL_ASSERT(layout.pool_blocks == 0 ||
                   (storage.pool != nullptr && storage.free_blocks != nullptr));
   reset();
 }
 
 void MapStore::reset() noexcept {
+  // No map: every cell forbidden, a consistent map with its block hashes.
+  combined_ = 0;
+  std::uint64_t words[kStoreBlockWords];
   for (std::uint32_t b = 0; b < layout_.blocks; ++b) {
     storage_.slots[0][b] = kForbiddenSlot;
     storage_.slots[1][b] = kForbiddenSlot;
+    for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) words[w] = valid_bits(b, w);
+    storage_.block_hashes[b] = block_hash(b, words);
+    combined_ ^= storage_.block_hashes[b];
   }
-  for (std::uint32_t h = 0; h < layout_.hash_blocks; ++h) storage_.block_hashes[h] = 0;
   free_count_ = 0;
   for (std::uint32_t p = layout_.pool_blocks; p > 0; --p)
     storage_.free_blocks[free_count_++] = p - 1;
@@ -74,7 +73,7 @@ MapOffer MapStore::offer(const MapChunkHeader& header, const std::uint8_t* runs,
   if (loaded_) finish_loaded();
   pass_until(layout_.blocks);
   if (inexact_) return drop(header, MapRefusal::kBaseInexact);
-  const std::uint64_t hash = update_hash();
+  const std::uint64_t hash = map_hash_from_combined(update_combined_, layout_.cell_count);
   if (hash != sequence_.update().map_hash) return drop(header, MapRefusal::kHashMismatch);
   commit(sequence_.update().map_version, hash);
   sequence_.finished();
@@ -90,6 +89,7 @@ MapOffer MapStore::drop(const MapChunkHeader& header, MapRefusal refusal) noexce
 void MapStore::begin_stream(MapChunkKind kind, std::uint64_t capture_ns) noexcept {
   keyframe_ = kind == MapChunkKind::kKeyframe;
   update_capture_ns_ = capture_ns;
+  update_combined_ = combined_;
 }
 
 void MapStore::abandon() noexcept {
@@ -103,10 +103,9 @@ void MapStore::abandon() noexcept {
     work[block] = held[block];
   }
   changed_count_ = 0;
-  new_hash_count_ = 0;
+  update_combined_ = combined_;
   next_block_ = 0;
   loaded_ = false;
-  hash_open_ = false;
   inexact_ = false;
 }
 
@@ -125,9 +124,10 @@ void MapStore::commit(std::uint64_t version, std::uint64_t hash) noexcept {
     const std::uint32_t block = storage_.changed_blocks[i];
     stale[block] = storage_.slots[held_][block];
   }
-  for (std::uint32_t i = 0; i < new_hash_count_; ++i) {
-    storage_.block_hashes[storage_.new_hash_blocks[i]] = storage_.new_hashes[i];
+  for (std::uint32_t i = 0; i < changed_count_; ++i) {
+    storage_.block_hashes[storage_.changed_blocks[i]] = storage_.changed_hashes[i];
   }
+  combined_ = update_combined_;
   version_ = version;
   hash_ = hash;
   capture_ns_ = update_capture_ns_;
@@ -182,30 +182,19 @@ void MapStore::seek(std::uint32_t block, bool whole) noexcept {
 }
 
 void MapStore::finish_loaded() noexcept {
-  feed_hash(next_block_, scratch_);
   store(next_block_, scratch_);
   ++next_block_;
   loaded_ = false;
 }
 
 void MapStore::pass_until(std::uint32_t block) noexcept {
-  // The blocks no run touched: a keyframe clears them; a delta keeps them, and only hashes them
-  // when another block of their hash block changed.
-  std::uint64_t words[kStoreBlockWords];
-  while (next_block_ < block) {
-    if (keyframe_) {
-      for (std::uint64_t& word : words) word = 0;
-      feed_hash(next_block_, words);
-      store(next_block_, words);
-    } else if (hash_open_) {
-      held_words(next_block_, words);
-      feed_hash(next_block_, words);
-    } else {
-      next_block_ = block;
-      return;
-    }
-    ++next_block_;
+  // The blocks no run touched: a keyframe clears them; a delta keeps them as they are.
+  if (!keyframe_) {
+    if (next_block_ < block) next_block_ = block;
+    return;
   }
+  const std::uint64_t zeros[kStoreBlockWords] = {};
+  for (; next_block_ < block; ++next_block_) store(next_block_, zeros);
 }
 
 void MapStore::held_words(std::uint32_t block, std::uint64_t* out) noexcept {
@@ -220,34 +209,10 @@ void MapStore::held_words(std::uint32_t block, std::uint64_t* out) noexcept {
   }
 }
 
-void MapStore::feed_hash(std::uint32_t block, const std::uint64_t* words) noexcept {
-  const std::uint32_t hash_block = block / kBlocksPerHashBlock;
-  if (!hash_open_) {
-    hash_open_ = true;
-    hash_state_ = map_block_hash_seed(hash_block);
-    // A delta reaches a hash block at its first changed block; the ones before it are unchanged.
-    std::uint64_t before[kStoreBlockWords];
-    for (std::uint32_t b = hash_block * kBlocksPerHashBlock; b < block; ++b) {
-      held_words(b, before);
-      for (const std::uint64_t word : before) hash_state_ = map_hash_mix(hash_state_ ^ word);
-    }
-  }
-  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
-    hash_state_ = map_hash_mix(hash_state_ ^ words[w]);
-  }
-  const bool last_of_map = block + 1 == layout_.blocks;
-  if (!last_of_map && (block + 1) % kBlocksPerHashBlock != 0) return;
-  if (last_of_map) {
-    // map_hash.hpp hashes whole blocks of 64 words, zero past the map's last word.
-    const std::uint32_t missing = kBlocksPerHashBlock - 1 - block % kBlocksPerHashBlock;
-    for (std::uint32_t w = 0; w < missing * kStoreBlockWords; ++w) {
-      hash_state_ = map_hash_mix(hash_state_);
-    }
-  }
-  storage_.new_hash_blocks[new_hash_count_] = hash_block;
-  storage_.new_hashes[new_hash_count_] = hash_state_;
-  ++new_hash_count_;
-  hash_open_ = false;
+std::uint64_t MapStore::block_hash(std::uint32_t block, const std::uint64_t* words) const noexcept {
+  std::uint64_t hash = map_block_hash_seed(block);
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) hash = map_hash_mix(hash ^ words[w]);
+  return hash;
 }
 
 void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
@@ -257,6 +222,7 @@ void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
     none = none && words[w] == 0;
     all = all && words[w] == valid_bits(block, w);
   }
+  const std::uint64_t hash = block_hash(block, words);  // of the exact words, whatever is kept
   std::uint32_t* work = storage_.slots[1 - held_];
   const std::uint32_t old = work[block];  // the held map's: each block is stored once per update
   std::uint32_t slot = none ? kFreeSlot : kForbiddenSlot;
@@ -276,21 +242,13 @@ void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
       for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) copy[w] = words[w];
     }
   }
-  if (slot == old) return;
+  // A degraded block that stays degraded may hold other (unknown) words: its hash tells.
+  if (slot == old && hash == storage_.block_hashes[block]) return;
   work[block] = slot;
-  storage_.changed_blocks[changed_count_++] = block;
-}
-
-std::uint64_t MapStore::update_hash() const noexcept {
-  std::uint64_t hash = map_hash_mix(layout_.cell_count);
-  std::uint32_t next_new = 0;
-  for (std::uint32_t h = 0; h < layout_.hash_blocks; ++h) {
-    const bool changed = next_new < new_hash_count_ && storage_.new_hash_blocks[next_new] == h;
-    const std::uint64_t block_hash =
-        changed ? storage_.new_hashes[next_new++] : storage_.block_hashes[h];
-    hash = map_hash_mix(hash ^ block_hash);
-  }
-  return hash;
+  storage_.changed_blocks[changed_count_] = block;
+  storage_.changed_hashes[changed_count_] = hash;
+  ++changed_count_;
+  update_combined_ ^= storage_.block_hashes[block] ^ hash;
 }
 
 std::uint64_t MapStore::valid_bits(std::uint32_t block, std::uint32_t word) const noexcept {

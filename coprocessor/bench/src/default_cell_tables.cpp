@@ -5,6 +5,8 @@
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cell/default_cell.hpp"
 #include "safecell/lut/model_luts.hpp"
+#include "safecell/sim/demo_scenario.hpp"
+#include "safecell/validation/demo_maps.hpp"
 
 namespace safecell {
 namespace {
@@ -27,6 +29,15 @@ DefaultCellTables::DefaultCellTables()
 const DefaultCellTables& default_cell_tables() {
   static const DefaultCellTables tables;
   return tables;
+}
+
+const std::vector<CellSet>& default_cell_demo_maps() {
+  static const std::vector<CellSet> maps = [] {
+    const DefaultCellTables& tables = default_cell_tables();
+    return demo_map_sequence(tables.cell, tables.grid, tables.luts, tables.silhouettes,
+                             kDemoHumanEnters_s, 30);
+  }();
+  return maps;
 }
 
 }  // namespace safecell

@@ -2,8 +2,11 @@
 // The default cell with its model-mode tables, built once per process (before any timing) and
 // shared by the fusion and link benchmarks.
 
+#include <vector>
+
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/lut/cell_set.hpp"
 #include "safecell/lut/lut_set.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 
@@ -20,5 +23,9 @@ struct DefaultCellTables {
 };
 
 const DefaultCellTables& default_cell_tables();
+
+// The demo's forbidden maps on the default cell: 1 s from when the person walks in, at 30 frames
+// per second, through the real pipeline (built once per process).
+const std::vector<CellSet>& default_cell_demo_maps();
 
 }  // namespace safecell

@@ -14,9 +14,7 @@
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/link/map_publisher.hpp"
 #include "safecell/protocol/frame_checker.hpp"
-#include "safecell/sim/demo_scenario.hpp"
 #include "safecell/v1/message.pb.h"
-#include "safecell/validation/demo_maps.hpp"
 #include "safecell/validation/percentile.hpp"
 
 namespace safecell {
@@ -63,16 +61,6 @@ void safety_crc32_full_frame(benchmark::State& state) {
   state.counters["bytes"] = static_cast<double>(kMaxFrameBytes - 48);
 }
 
-// The demo's maps on the default cell: 1 s from when the person walks in, at 30 frames/s.
-const std::vector<CellSet>& demo_maps() {
-  static const std::vector<CellSet> maps = [] {
-    const DefaultCellTables& tables = default_cell_tables();
-    return demo_map_sequence(tables.cell, tables.grid, tables.luts, tables.silhouettes,
-                             kDemoHumanEnters_s, 30);
-  }();
-  return maps;
-}
-
 double wire_bytes(const MapUpdate& update) {
   double bytes = 0.0;
   for (const auto& chunk : update.chunks) {
@@ -85,7 +73,7 @@ double wire_bytes(const MapUpdate& update) {
 
 // One timed unit: publishing (encoding) the next map of the sequence as a delta.
 void map_updates_of_demo_sequence(benchmark::State& state) {
-  const std::vector<CellSet>& maps = demo_maps();
+  const std::vector<CellSet>& maps = default_cell_demo_maps();
   const std::uint32_t cells = maps.front().cell_count();
   // The largest keyframe of the sequence (any map may have to go out whole).
   double keyframe_bytes = 0.0;

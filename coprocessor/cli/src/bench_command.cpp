@@ -1,7 +1,16 @@
 #include "safecell/cli/bench_command.hpp"
 
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "safecell/bench/map_sequence_writer.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cli/text_table.hpp"
 
@@ -48,6 +57,39 @@ constexpr NamedMicroseconds kNamedMicroseconds[] = {
     {"frame_check_full_size", "frame_check_us"},
     {"map_updates_of_demo_sequence", "delta_encode_us"},
 };
+
+// The controller's figures: its benchmark program on the demo's maps. Empty when the program is
+// not built (a coprocessor-only build); a failure of the program is an error.
+nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
+#ifdef SAFECELL_CONTROLLER_BENCH
+  const std::filesystem::path maps =
+      std::filesystem::temp_directory_path() / ("safecell-demo-maps-" + std::to_string(getpid()));
+  write_default_cell_demo_maps(maps.string());
+  const std::string command = std::string("'") + SAFECELL_CONTROLLER_BENCH +
+                              "' --json --benchmark_color=false --maps='" + maps.string() +
+                              "' --benchmark_min_time=" + (quick ? "0.02" : "0.5") + " 2>&1";
+  progress << "running the controller's benchmarks (safecell-controller-bench)...\n" << std::flush;
+  std::string output;
+  {
+    const std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    if (!pipe) throw std::runtime_error("cannot run " + std::string(SAFECELL_CONTROLLER_BENCH));
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get()) != nullptr) {
+      output += buffer.data();
+    }
+  }
+  std::filesystem::remove(maps);
+  const std::size_t json_start = output.rfind("\n{");
+  if (json_start == std::string::npos) {
+    throw std::runtime_error("safecell-controller-bench gave no figures:\n" + output);
+  }
+  return nlohmann::ordered_json::parse(output.substr(json_start + 1));
+#else
+  (void)quick;
+  (void)progress;
+  return nlohmann::ordered_json::object();
+#endif
+}
 
 }  // namespace
 
@@ -113,6 +155,10 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
     all[figure.name] = {{"median_ms", figure.median_ms},
                         {"worst_ms", figure.max_ms},
                         {"counters", figure.counters}};
+  }
+  const nlohmann::ordered_json controller = controller_figures(options.quick, progress);
+  for (auto figure = controller.begin(); figure != controller.end(); ++figure) {
+    report[figure.key()] = figure.value();
   }
   report["repetitions"] = run.repetitions;
   report["benchmarks"] = std::move(all);

@@ -8,16 +8,17 @@
 // when the update is whole and its hash matches. A reader of view() never sees half an update.
 //
 // Updates arrive as chunks (map_chunk.hpp) in grid order, so the store rebuilds each block's
-// exact words in a scratch buffer as the chunks stream past, hashes them (map_hash.hpp) before
-// storing, and then keeps them mixed, or all free / all forbidden. When the pool has no room
-// for a mixed block, the block is stored as forbidden ("degraded"): the map only gains forbidden
-// cells, and the count says so. The hash still checks the exact content, so a keyframe always
-// verifies; a delta needs the exact base of every 4096-cell hash block it touches, and a delta
-// onto a degraded block is refused (MapRefusal::kBaseInexact) so the link asks for a keyframe.
+// exact words in a scratch buffer as the chunks stream past, hashes them (map_hash.hpp: one hash
+// per 512-cell block, the map hash their XOR) before storing, and then keeps them mixed, or all
+// free / all forbidden. When the pool has no room for a mixed block, the block is stored as
+// forbidden ("degraded"): the map only gains forbidden cells, and the count says so. The hash
+// still checks the exact content, so a keyframe always verifies; a delta that changes part of a
+// degraded block has no exact base there and is refused (MapRefusal::kBaseInexact), so the link
+// asks for a keyframe.
 //
 // Memory: the caller's (MapStoreStorage), sized by MapStoreLayout from the grid and the pool size;
-// nothing is allocated. Cost per update: O(runs + blocks it touches) for a delta (hash blocks it
-// touches are re-hashed whole, 64 words each), O(blocks) for a keyframe.
+// nothing is allocated. Cost per update: O(runs + blocks it changes) for a delta, O(blocks) for a
+// keyframe.
 // Thread context: one thread, the controller's cycle (which also polls the link); not
 // synchronised. No allocation, no recursion, bounded loops.
 
@@ -32,40 +33,40 @@ namespace safecell {
 
 struct MapStoreLayout {
   CellIndex cell_count = 0;
-  std::uint32_t blocks = 0;       // store blocks of 512 cells
-  std::uint32_t hash_blocks = 0;  // map hash blocks of 4096 cells
+  std::uint32_t blocks = 0;       // blocks of 512 cells (also the map hash's blocks)
   std::uint32_t pool_blocks = 0;  // mixed blocks the pool holds (the held map's and an update's)
 
   static constexpr MapStoreLayout of(CellIndex cell_count, std::uint32_t pool_blocks) noexcept {
-    return {cell_count, store_blocks_for(cell_count), map_hash_blocks(cell_count), pool_blocks};
+    return {cell_count, store_blocks_for(cell_count), pool_blocks};
   }
   // The bytes of all the arrays of MapStoreStorage.
   constexpr std::size_t bytes() const noexcept {
-    return std::size_t{blocks} * 4 * 3 + std::size_t{pool_blocks} * (kStoreBlockWords * 8 + 4) +
-           std::size_t{hash_blocks} * (8 * 2 + 4);
+    return std::size_t{blocks} * (4 * 3 + 8 * 2) +
+           std::size_t{pool_blocks} * (kStoreBlockWords * 8 + 4);
   }
 };
 
 // The default pool. A small grid (up to 4096 blocks, 2 M cells) gets room for two whole maps of
-// mixed blocks (its blocks are mostly mixed: compression does not pay there, exactness does); a
-// larger grid gets half its blocks, which a forbidden map of a real cell fits with room to spare
-// (safecell-controller-bench measures it on the demo's maps upsampled to 6 cm). A map with more
-// mixed blocks than fit is held with some blocks degraded (forbidden, counted).
+// mixed blocks: its blocks are nearly all mixed (97 % on the default cell's grid with the demo's
+// maps), so compression does not pay there and exactness does. A larger grid gets one and a half
+// blocks per grid block: the demo's maps upsampled to the 6 cm grid mix up to three quarters of
+// its blocks (safecell-controller-bench), which leaves room for an update's changes. A map with
+// more mixed blocks than fit is held with some blocks degraded (forbidden, counted); a smaller
+// pool is an integrator's trade of memory against those.
 constexpr std::uint32_t default_pool_blocks(CellIndex cell_count) noexcept {
   const std::uint32_t blocks = store_blocks_for(cell_count);
-  const std::uint32_t pool = blocks <= 4096 ? 2 * blocks : blocks / 2;
+  const std::uint32_t pool = blocks <= 4096 ? 2 * blocks : blocks + blocks / 2;
   return pool < 16 ? 16 : pool;
 }
 
 // The arrays a MapStore works in, each of the size its comment names (layout fields).
 struct MapStoreStorage {
-  std::uint32_t* slots[2];         // blocks each
-  std::uint64_t* pool;             // pool_blocks * kStoreBlockWords
-  std::uint32_t* free_blocks;      // pool_blocks
-  std::uint32_t* changed_blocks;   // blocks
-  std::uint64_t* block_hashes;     // hash_blocks: the held map's
-  std::uint64_t* new_hashes;       // hash_blocks: the update's, for the hash blocks it touches
-  std::uint32_t* new_hash_blocks;  // hash_blocks: which those are
+  std::uint32_t* slots[2];        // blocks each
+  std::uint64_t* pool;            // pool_blocks * kStoreBlockWords
+  std::uint32_t* free_blocks;     // pool_blocks
+  std::uint32_t* changed_blocks;  // blocks: the blocks the update being collected changed
+  std::uint64_t* changed_hashes;  // blocks: their new block hashes
+  std::uint64_t* block_hashes;    // blocks: the held map's block hashes
 };
 
 class MapStore {
@@ -108,9 +109,8 @@ class MapStore {
   void pass_until(std::uint32_t block) noexcept;
   void finish_loaded() noexcept;
   void held_words(std::uint32_t block, std::uint64_t* out) noexcept;
-  void feed_hash(std::uint32_t block, const std::uint64_t* words) noexcept;
+  std::uint64_t block_hash(std::uint32_t block, const std::uint64_t* words) const noexcept;
   void store(std::uint32_t block, const std::uint64_t* words) noexcept;
-  std::uint64_t update_hash() const noexcept;
   std::uint64_t valid_bits(std::uint32_t block, std::uint32_t word) const noexcept;
 
   MapStoreLayout layout_;
@@ -122,19 +122,18 @@ class MapStore {
   std::uint64_t version_ = 0;
   std::uint64_t hash_ = 0;
   std::uint64_t capture_ns_ = 0;
+  std::uint64_t combined_ = 0;  // the XOR of the held map's block hashes
 
   // The update being collected.
   MapUpdateSequence sequence_;
   bool keyframe_ = false;
   bool inexact_ = false;  // it needed the words of a degraded block
   std::uint64_t update_capture_ns_ = 0;
-  std::uint32_t changed_count_ = 0;   // storage_.changed_blocks[0 .. changed_count_)
-  std::uint32_t new_hash_count_ = 0;  // storage_.new_hash_blocks / new_hashes [0 .. count)
-  std::uint32_t next_block_ = 0;      // blocks below this are final in the working table
-  bool loaded_ = false;               // scratch_ holds block next_block_, being written
+  std::uint32_t changed_count_ = 0;    // changed_blocks / changed_hashes [0 .. changed_count_)
+  std::uint64_t update_combined_ = 0;  // combined_ with the changed blocks' hashes swapped in
+  std::uint32_t next_block_ = 0;       // blocks below this are final in the working table
+  bool loaded_ = false;                // scratch_ holds block next_block_, being written
   std::uint64_t scratch_[kStoreBlockWords]{};
-  bool hash_open_ = false;  // hash_state_ hashes the hash block of next_block_
-  std::uint64_t hash_state_ = 0;
 };
 
 }  // namespace safecell

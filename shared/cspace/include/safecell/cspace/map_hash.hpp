@@ -1,15 +1,16 @@
 #pragma once
-// The hash of a forbidden map, defined per block of cells so that applying a chunk recomputes only
-// the blocks it touched.
+// The hash of a forbidden map, defined per block of cells and combined by XOR, so that applying
+// an update re-hashes only the blocks it changed and the map hash follows in O(1) per block.
 //
-//   block b       cells [4096 b, 4096 (b + 1)), i.e. words [64 b, 64 b + 64) of the map
-//   block hash    h = mix(b + 1); for each word w of the block (zero past the map's last word):
-//                 h = mix(h ^ w)
-//   map hash      h = mix(cell_count); for each block hash k, in order: h = mix(h ^ k)
+//   block b       cells [512 b, 512 (b + 1)), i.e. words [8 b, 8 b + 8) of the map
+//   block hash    k = mix(b + 1); for each word w of the block (zero past the map's last word):
+//                 k = mix(k ^ w)
+//   map hash      mix(mix(cell_count) ^ (k_0 ^ k_1 ^ ... ^ k_last))
 //   mix           the 64-bit finaliser of MurmurHash3 (two multiply-xorshift rounds)
 // Computed over 64-bit word values, so it is equal on every platform whatever its byte order. It
 // checks that a receiver rebuilt the sender's map (every chunk applied, none twice, none torn); the
-// link's CRC is what guards the bytes. Test vectors are in test/cspace/map_hash_test.cpp.
+// link's CRC is what guards the bytes. Each block hash is keyed by the block's index, so equal
+// blocks at different places do not cancel. Test vectors are in test/cspace/map_hash_test.cpp.
 // Real-time safe: no allocation; caller storage only.
 
 #include <cstdint>
@@ -18,7 +19,7 @@
 
 namespace safecell {
 
-inline constexpr std::uint32_t kMapHashBlockCells = 4096;
+inline constexpr std::uint32_t kMapHashBlockCells = 512;
 inline constexpr std::uint32_t kMapHashBlockWords = kMapHashBlockCells / 64;
 
 constexpr std::uint32_t map_hash_blocks(std::uint32_t cell_count) noexcept {
@@ -26,8 +27,8 @@ constexpr std::uint32_t map_hash_blocks(std::uint32_t cell_count) noexcept {
                                     kMapHashBlockCells);
 }
 
-// The mixing step and a block's starting value, for receivers that hash a map as they rebuild it
-// (the controller's compressed store feeds each block's 64 words in order).
+// The mixing step, a block's starting value and the final step, for receivers that hash a map as
+// they rebuild it (the controller's compressed store hashes each block it stores).
 constexpr std::uint64_t map_hash_mix(std::uint64_t x) noexcept {
   x ^= x >> 33;
   x *= 0xFF51AFD7ED558CCDull;
@@ -38,6 +39,11 @@ constexpr std::uint64_t map_hash_mix(std::uint64_t x) noexcept {
 }
 constexpr std::uint64_t map_block_hash_seed(std::uint32_t block) noexcept {
   return map_hash_mix(std::uint64_t{block} + 1);
+}
+// The map hash from the XOR of all its block hashes.
+constexpr std::uint64_t map_hash_from_combined(std::uint64_t combined_block_hashes,
+                                               CellIndex cell_count) noexcept {
+  return map_hash_mix(map_hash_mix(cell_count) ^ combined_block_hashes);
 }
 
 // The hash of block `block` of a map of cell_count cells (precondition: block < blocks).

@@ -19,9 +19,8 @@ class MapStoreMemory {
         pool_(std::size_t{layout.pool_blocks} * kStoreBlockWords),
         free_blocks_(layout.pool_blocks),
         changed_blocks_(layout.blocks),
-        block_hashes_(layout.hash_blocks),
-        new_hashes_(layout.hash_blocks),
-        new_hash_blocks_(layout.hash_blocks) {}
+        changed_hashes_(layout.blocks),
+        block_hashes_(layout.blocks) {}
   MapStoreMemory(const MapStoreMemory&) = delete;
   MapStoreMemory& operator=(const MapStoreMemory&) = delete;
 
@@ -31,9 +30,8 @@ class MapStoreMemory {
             pool_.data(),
             free_blocks_.data(),
             changed_blocks_.data(),
-            block_hashes_.data(),
-            new_hashes_.data(),
-            new_hash_blocks_.data()};
+            changed_hashes_.data(),
+            block_hashes_.data()};
   }
 
  private:
@@ -42,9 +40,8 @@ class MapStoreMemory {
   std::vector<std::uint64_t> pool_;
   std::vector<std::uint32_t> free_blocks_;
   std::vector<std::uint32_t> changed_blocks_;
+  std::vector<std::uint64_t> changed_hashes_;
   std::vector<std::uint64_t> block_hashes_;
-  std::vector<std::uint64_t> new_hashes_;
-  std::vector<std::uint32_t> new_hash_blocks_;
 };
 
 // A MapStore with its memory, for the Linux module and the tests.
