@@ -107,8 +107,7 @@ Outcome run_scenario(const Scenario& scenario) {
   cycle_config.look_ahead.sensor_period_s =
       scenario.whole_relation ? static_cast<double>(kCaptureNs) * 1e-9 : 0.0;
   cycle_config.look_ahead.stop = SimulatedRobot::measure_stop_model(robot_config);
-  cycle_config.look_ahead.human_speed_m_s =
-      scenario.whole_relation ? kHumanWalkingSpeed_m_s : 0.0;
+  cycle_config.look_ahead.human_speed_m_s = scenario.whole_relation ? kHumanWalkingSpeed_m_s : 0.0;
   cycle_config.look_ahead.max_cells = 40;
   SafetyCycle cycle(grid, cycle_config, robot, clock, link, store.store(), watchdog);
   // The robot's own program: joint 0 at full speed towards its upper limit. Only the look-ahead

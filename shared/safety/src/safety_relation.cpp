@@ -27,8 +27,8 @@ JointCellGeometry joint_cell_geometry(const CspaceGrid& grid, std::uint32_t join
 }
 
 Result<double> total_reaction_s(const ReactionDelays& delays) noexcept {
-  const double parts[] = {delays.sensor_period_s, delays.processing_s, delays.network_s,
-                          delays.watchdog_s, delays.control_cycle_s, delays.data_age_s,
+  const double parts[] = {delays.sensor_period_s, delays.processing_s,    delays.network_s,
+                          delays.watchdog_s,      delays.control_cycle_s, delays.data_age_s,
                           delays.actuation_s};
   double total = 0.0;
   for (const double part : parts) {
