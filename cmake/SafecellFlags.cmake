@@ -15,5 +15,8 @@ add_library(safecell_freestanding INTERFACE)
 add_library(safecell::freestanding ALIAS safecell_freestanding)
 target_compile_options(safecell_freestanding INTERFACE -fno-exceptions -fno-rtti -ffp-contract=off)
 if(SAFECELL_BARE_METAL)
-  target_compile_options(safecell_freestanding INTERFACE -ffreestanding)
+  # The call graph with each function's frame (.ci files) gives the controller image's stack depth;
+  # sections per function let the linker drop what the image does not call.
+  target_compile_options(safecell_freestanding INTERFACE -ffreestanding -fcallgraph-info=su
+                         -ffunction-sections -fdata-sections)
 endif()

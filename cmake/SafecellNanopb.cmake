@@ -38,7 +38,9 @@ add_library(safecell_nanopb_runtime STATIC
 add_library(safecell::nanopb_runtime ALIAS safecell_nanopb_runtime)
 target_include_directories(safecell_nanopb_runtime SYSTEM PUBLIC ${SAFECELL_NANOPB_SOURCE_DIR})
 if(SAFECELL_BARE_METAL)
-  target_compile_options(safecell_nanopb_runtime PRIVATE -ffreestanding)
+  # The call graph too: the controller image's stack report walks through the decoder.
+  target_compile_options(safecell_nanopb_runtime PRIVATE -ffreestanding -fcallgraph-info=su
+                         -ffunction-sections -fdata-sections)
 endif()
 set_property(GLOBAL APPEND PROPERTY SAFECELL_FREESTANDING_LIBRARIES safecell_nanopb_runtime)
 
@@ -67,7 +69,8 @@ function(safecell_nanopb_generate target)
   target_include_directories(${target} SYSTEM PUBLIC $<BUILD_INTERFACE:${out_dir}>)
   target_link_libraries(${target} PUBLIC safecell::nanopb_runtime)
   if(SAFECELL_BARE_METAL)
-    target_compile_options(${target} PRIVATE -ffreestanding)
+    target_compile_options(${target} PRIVATE -ffreestanding -fcallgraph-info=su
+                           -ffunction-sections -fdata-sections)
   endif()
   set_property(GLOBAL APPEND PROPERTY SAFECELL_FREESTANDING_LIBRARIES ${target})
 endfunction()
