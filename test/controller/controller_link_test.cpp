@@ -145,10 +145,22 @@ TEST_F(ControllerLinkTest, ANewSessionForgetsTheHeldMap) {
   deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
   deliver(coprocessor_.update(nullptr, 0, map_with(0, 10), 1, 19 * kMs, 20 * kMs), 21 * kMs);
   ASSERT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
-  ScriptedCoprocessor restarted;
+  test::ScriptedCoprocessor restarted(kGrid, kLuts, kSession + 1, kCells);  // a new session id
   deliver(restarted.handshake(30 * kMs), 30 * kMs);
   EXPECT_EQ(link_.block(31 * kMs), LinkBlock::kNoMap);
   EXPECT_EQ(cell_bits::count(held().data(), 0, kCells), kCells) << "no map: all forbidden";
+}
+
+TEST_F(ControllerLinkTest, AReplayedHandshakeOfTheSessionIsARepetitionAndKeepsTheMap) {
+  const Bytes handshake = coprocessor_.handshake(10 * kMs);
+  deliver(handshake, 10 * kMs);
+  const auto map = map_with(0, 10);
+  deliver(coprocessor_.update(nullptr, 0, map, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  ASSERT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
+  deliver(handshake, 25 * kMs);
+  EXPECT_EQ(link_.last_fault().error, LinkError::kRepetition);
+  EXPECT_EQ(link_.block(26 * kMs), LinkBlock::kNone) << "the session and its map stay";
+  EXPECT_EQ(held(), map);
 }
 
 TEST_F(ControllerLinkTest, OversizeDatagramsAndGarbageAreCorruption) {

@@ -101,6 +101,13 @@ void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_
     detected({LinkError::kInsertion, header.source_id}, now_ns);
     return;
   }
+  if (session_up_ && header.session_id == session_id_ &&
+      header.sequence <= checker_.last_sequence()) {
+    // The handshake of the session in place, again (a duplicate or a replay): refused like any
+    // repeated frame, and the session and its map stay as they are.
+    detected({LinkError::kRepetition, header.sequence}, now_ns);
+    return;
+  }
   if (decode_message(frame.payload, frame.payload_size, incoming_) != Status::kOk ||
       incoming_.which_body != safecell_v1_Message_handshake_tag) {
     detected({LinkError::kCorruption, 0}, now_ns);
