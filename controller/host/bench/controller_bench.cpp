@@ -254,7 +254,7 @@ void controller_cycle_with(benchmark::State& state, int delta_every, int frames_
   std::size_t lines = 0;
   std::size_t frames = 0;
   std::uint64_t cycle_count = 0;
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     clock.now += 4'000'000;
     // A new delta when the last one is in (frames left over from a bounded poll come first).
     if (++cycle_count % static_cast<std::uint64_t>(delta_every) == 0 &&
@@ -334,7 +334,7 @@ void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence,
   std::uint64_t version = 1;
   std::size_t held = 0;
   std::vector<double> apply_us;
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     const std::size_t to = (held + 1) % sequence.size();
     const SentDelta delta =
         delta_of(sequence[held], version, sequence[to], version + 1, cells, false);
@@ -376,7 +376,7 @@ void planner(benchmark::State& state) {
   std::mt19937_64 rng(11);
   std::vector<double> plan_ms;
   double found = 0;
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     CellIndex start = 0;
     CellIndex goal = 0;
     do {
@@ -457,12 +457,12 @@ const GridSpec& maps_spec();
 namespace {
 
 const std::vector<Words>& fine_maps() {
-  static const std::vector<Words> fine = [] {
-    const CspaceGrid coarse_grid = CspaceGrid::create(maps_spec()).value();
-    const CspaceGrid fine_grid_ = CspaceGrid::create(fine_grid(maps_spec())).value();
-    return upsampled(maps(), coarse_grid, fine_grid_, 4);
+  static const std::vector<Words> upsampled_maps = [] {
+    const CspaceGrid coarse = CspaceGrid::create(maps_spec()).value();
+    const CspaceGrid fine = CspaceGrid::create(fine_grid(maps_spec())).value();
+    return upsampled(maps(), coarse, fine, 4);
   }();
-  return fine;
+  return upsampled_maps;
 }
 
 void map_store_memory(benchmark::State& state) {
@@ -473,7 +473,7 @@ void map_store_memory(benchmark::State& state) {
   double degraded = 0;
   double fine_mixed = 0;
   double fine_degraded = 0;
-  for (auto _ : state) {
+  while (state.KeepRunning()) {
     mixed = degraded = fine_mixed = fine_degraded = 0;
     hold_all(sequence.maps, cells, default_pool_blocks(cells), mixed, degraded);
     hold_all(fine_maps(), fine.cell_count(), default_pool_blocks(fine.cell_count()), fine_mixed,
@@ -522,6 +522,18 @@ class CounterCollector final : public benchmark::ConsoleReporter {
   std::map<std::string, double> counters_;
 };
 
+// Timed by their own clocks (manual time); the memory report runs once.
+BENCHMARK(controller_cycle)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(controller_cycle_every_delta)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(controller_cycle_one_frame)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(delta_apply)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(delta_apply_fine)
+    ->Name("delta_apply_fine_grid")
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(planner)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(map_store_memory)->Iterations(1)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 const GridSpec& maps_spec() { return maps().grid; }
@@ -555,25 +567,6 @@ int main(int argc, char** argv) {
     std::cerr << "safecell-controller-bench: " << error.what() << "\n";
     return 2;
   }
-  benchmark::RegisterBenchmark("controller_cycle", controller_cycle)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("controller_cycle_every_delta", controller_cycle_every_delta)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("controller_cycle_one_frame", controller_cycle_one_frame)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("delta_apply", delta_apply)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("delta_apply_fine_grid", delta_apply_fine)
-      ->UseManualTime()
-      ->Unit(benchmark::kMicrosecond);
-  benchmark::RegisterBenchmark("planner", planner)->UseManualTime()->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("map_store_memory", map_store_memory)
-      ->Iterations(1)
-      ->Unit(benchmark::kMillisecond);
   int count = static_cast<int>(rest.size());
   benchmark::Initialize(&count, rest.data());
   CounterCollector collector;
