@@ -34,13 +34,8 @@ GridSpec default_grid() {
   return spec;
 }
 
-// The map store's memory: zero-initialised statics (bss), sized at compile time.
-std::uint32_t slots[2][kLayout.blocks];
-std::uint64_t pool[kLayout.pool_blocks * kStoreBlockWords];
-std::uint32_t free_blocks[kLayout.pool_blocks];
-std::uint32_t changed_blocks[kLayout.blocks];
-std::uint64_t changed_hashes[kLayout.blocks];
-std::uint64_t block_hashes[kLayout.blocks];
+// The map store's memory: zero-initialised (bss), sized at compile time.
+StaticMapStoreMemory<kLayout> store_memory;
 
 // Memory-mapped "registers" the ports read and write.
 volatile std::uint64_t timer_ns;

@@ -35,15 +35,6 @@ constexpr std::uint64_t kSession = 0x5E55;
 constexpr std::uint64_t kCycleNs = 4'000'000;
 constexpr std::uint64_t kCaptureNs = 33'333'333;
 
-class SimulationClock final : public ClockPort {
- public:
-  explicit SimulationClock(const SimulatedRobot& robot) : robot_(robot) {}
-  std::uint64_t now_ns() noexcept override { return robot_.time_ns(); }
-
- private:
-  const SimulatedRobot& robot_;
-};
-
 struct Scenario {
   double max_speed_rad_s = 1.0;
   double latency_s = 0.05;        // exposure -> map at the controller
@@ -92,7 +83,7 @@ Outcome run_scenario(const Scenario& scenario) {
   robot_config.start_rad[2] = -0.2;
   SimulatedRobot robot(robot_config);
   robot.set_time_ns(1'000'000'000);
-  SimulationClock clock(robot);
+  SimulatedClock clock(robot);
 
   HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
   test::MemoryPort port;

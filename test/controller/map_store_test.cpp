@@ -24,29 +24,7 @@ using test::SentChunk;
 using test::update_of;
 using test::Words;
 
-// The dense reference receiver.
-class DenseReceiver {
- public:
-  explicit DenseReceiver(CellIndex cells)
-      : cells_(cells),
-        words_{Words(cell_bits::words_for(cells)), Words(cell_bits::words_for(cells))},
-        hashes_{Words(map_hash_blocks(cells)), Words(map_hash_blocks(cells))},
-        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
-                   cells) {}
-  MapOffer offer(const SentChunk& chunk) {
-    return assembler_.offer(chunk.header, chunk.runs.data(), chunk.runs.size());
-  }
-  Words held() const {
-    return Words(assembler_.map(), assembler_.map() + cell_bits::words_for(cells_));
-  }
-  std::uint64_t version() const { return assembler_.version(); }
-
- private:
-  CellIndex cells_;
-  Words words_[2];
-  Words hashes_[2];
-  MapAssembler assembler_;
-};
+using test::DenseReceiver;
 
 // Every forbidden cell of `inner` is forbidden in `outer`.
 bool covers(const Words& outer, const Words& inner) {

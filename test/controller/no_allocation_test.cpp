@@ -74,15 +74,6 @@ class PreloadedPort final : public LinkPort {
   long sent = 0;
 };
 
-class RobotClock final : public ClockPort {
- public:
-  explicit RobotClock(const SimulatedRobot& robot) : robot_(robot) {}
-  std::uint64_t now_ns() noexcept override { return robot_.time_ns(); }
-
- private:
-  const SimulatedRobot& robot_;
-};
-
 TEST(ControllerCycle, AllocatesNothingAfterInit) {
   GridSpec spec;
   spec.m_max_m = 0.1;
@@ -96,7 +87,7 @@ TEST(ControllerCycle, AllocatesNothingAfterInit) {
   robot_config.start_rad[0] = -1.8;
   SimulatedRobot robot(robot_config);
   robot.set_time_ns(1'000'000'000);
-  RobotClock clock(robot);
+  SimulatedClock clock(robot);
   HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
   PreloadedPort port;
   ControllerLinkConfig link_config;

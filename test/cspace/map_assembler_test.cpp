@@ -21,38 +21,7 @@ using test::SentChunk;
 using test::update_of;
 using test::Words;
 
-class Receiver {
- public:
-  explicit Receiver(CellIndex cells)
-      : cells_(cells),
-        words_{Words(cell_bits::words_for(cells)), Words(cell_bits::words_for(cells))},
-        hashes_{Words(map_hash_blocks(cells)), Words(map_hash_blocks(cells))},
-        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
-                   cells) {}
-
-  MapAssembler::Offer offer(const SentChunk& chunk) {
-    return assembler_.offer(chunk.header, chunk.runs.data(), chunk.runs.size());
-  }
-  // Over a whole update: its refusal, else the last chunk's outcome.
-  MapAssembler::Offer offer_all(const std::vector<SentChunk>& chunks) {
-    MapAssembler::Offer last;
-    for (const SentChunk& chunk : chunks) {
-      last = offer(chunk);
-      if (last.outcome == MapAssembler::Outcome::kRefused) return last;
-    }
-    return last;
-  }
-  Words held() const {
-    return Words(assembler_.map(), assembler_.map() + cell_bits::words_for(cells_));
-  }
-  const MapAssembler& assembler() const { return assembler_; }
-
- private:
-  CellIndex cells_;
-  Words words_[2];
-  Words hashes_[2];
-  MapAssembler assembler_;
-};
+using Receiver = test::DenseReceiver;
 
 TEST(MapAssembler, StartsWithNoMapAndEverythingForbidden) {
   Receiver receiver(1000);

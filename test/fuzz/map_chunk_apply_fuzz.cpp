@@ -24,28 +24,14 @@ constexpr std::uint32_t kWords = cell_bits::words_for(kCells);
 constexpr std::uint32_t kBlocks = map_hash_blocks(kCells);
 constexpr MapStoreLayout kStoreLayout = MapStoreLayout::of(kCells, 3);
 
-struct StoreMemory {
-  std::uint32_t slots[2][kStoreLayout.blocks];
-  std::uint64_t pool[kStoreLayout.pool_blocks * kStoreBlockWords];
-  std::uint32_t free_blocks[kStoreLayout.pool_blocks];
-  std::uint32_t changed_blocks[kStoreLayout.blocks];
-  std::uint64_t changed_hashes[kStoreLayout.blocks];
-  std::uint64_t block_hashes[kStoreLayout.blocks];
-};
-
 }  // namespace
 
 int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
   static std::uint64_t words[2][kWords];
   static std::uint64_t hashes[2][kBlocks];
   MapAssembler assembler({{words[0], words[1]}, {hashes[0], hashes[1]}}, kCells);
-  static StoreMemory memory;
-  MapStore store(kStoreLayout, {{memory.slots[0], memory.slots[1]},
-                                memory.pool,
-                                memory.free_blocks,
-                                memory.changed_blocks,
-                                memory.changed_hashes,
-                                memory.block_hashes});
+  static StaticMapStoreMemory<kStoreLayout> memory;
+  MapStore store(kStoreLayout, memory.storage());
   // A first map to hold: cells 100..199 forbidden, version 1.
   {
     std::uint64_t target[kWords] = {};

@@ -69,6 +69,23 @@ struct MapStoreStorage {
   std::uint64_t* block_hashes;    // blocks: the held map's block hashes
 };
 
+// The arrays of a MapStore as static storage sized at compile time, for targets without a heap:
+// `static StaticMapStoreMemory<kLayout> memory;` (zero-initialised, in bss) then
+// `MapStore store(kLayout, memory.storage());`.
+template <const MapStoreLayout& kLayout>
+struct StaticMapStoreMemory {
+  std::uint32_t slots[2][kLayout.blocks];
+  std::uint64_t pool[std::size_t{kLayout.pool_blocks} * kStoreBlockWords];
+  std::uint32_t free_blocks[kLayout.pool_blocks];
+  std::uint32_t changed_blocks[kLayout.blocks];
+  std::uint64_t changed_hashes[kLayout.blocks];
+  std::uint64_t block_hashes[kLayout.blocks];
+
+  MapStoreStorage storage() noexcept {
+    return {{slots[0], slots[1]}, pool, free_blocks, changed_blocks, changed_hashes, block_hashes};
+  }
+};
+
 class MapStore {
  public:
   // Starts with no map (version 0, every cell forbidden). Precondition (checked): every array of

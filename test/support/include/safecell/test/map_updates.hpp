@@ -1,7 +1,8 @@
 #pragma once
 // What a sender emits for a map update, for the tests of the receivers (the dense MapAssembler,
-// the controller's MapStore): chunks of a keyframe or a delta, cut at a given run capacity, and
-// random maps to send. Header-only; the tests that include it link safecell::cspace.
+// the controller's MapStore): chunks of a keyframe or a delta, cut at a given run capacity, random
+// maps to send, and the dense reference receiver. Header-only; the tests that include it link
+// safecell::cspace.
 
 #include <algorithm>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "safecell/cspace/cell_bits.hpp"
+#include "safecell/cspace/map_assembler.hpp"
 #include "safecell/cspace/map_chunk.hpp"
 #include "safecell/cspace/map_hash.hpp"
 #include "safecell/cspace/map_update_sequence.hpp"
@@ -60,5 +62,40 @@ inline Words random_map(CellIndex cells, std::mt19937_64& rng, CellIndex max_run
   }
   return words;
 }
+
+// The dense reference receiver: MapAssembler with its memory.
+class DenseReceiver {
+ public:
+  explicit DenseReceiver(CellIndex cells)
+      : cells_(cells),
+        words_{Words(cell_bits::words_for(cells)), Words(cell_bits::words_for(cells))},
+        hashes_{Words(map_hash_blocks(cells)), Words(map_hash_blocks(cells))},
+        assembler_({{words_[0].data(), words_[1].data()}, {hashes_[0].data(), hashes_[1].data()}},
+                   cells) {}
+
+  MapAssembler::Offer offer(const SentChunk& chunk) {
+    return assembler_.offer(chunk.header, chunk.runs.data(), chunk.runs.size());
+  }
+  // Over a whole update: its refusal, else the last chunk's outcome.
+  MapAssembler::Offer offer_all(const std::vector<SentChunk>& chunks) {
+    MapAssembler::Offer last;
+    for (const SentChunk& chunk : chunks) {
+      last = offer(chunk);
+      if (last.outcome == MapAssembler::Outcome::kRefused) return last;
+    }
+    return last;
+  }
+  Words held() const {
+    return Words(assembler_.map(), assembler_.map() + cell_bits::words_for(cells_));
+  }
+  const MapAssembler& assembler() const { return assembler_; }
+  std::uint64_t version() const { return assembler_.version(); }
+
+ private:
+  CellIndex cells_;
+  Words words_[2];
+  Words hashes_[2];
+  MapAssembler assembler_;
+};
 
 }  // namespace safecell::test

@@ -17,6 +17,7 @@
 
 #include <cstdint>
 
+#include "safecell/controller/clock_port.hpp"
 #include "safecell/controller/robot_port.hpp"
 #include "safecell/controller/stop_model.hpp"
 
@@ -92,6 +93,17 @@ class SimulatedRobot final : public RobotPort {
   bool powered_ = true;
   static constexpr int kQueue = 8;
   Pending pending_[kQueue]{};
+};
+
+// The simulation's own time as the core's clock, for runs faster or slower than real time (the
+// tests, the closed loop in simulation).
+class SimulatedClock final : public ClockPort {
+ public:
+  explicit SimulatedClock(const SimulatedRobot& robot) noexcept : robot_(robot) {}
+  std::uint64_t now_ns() noexcept override { return robot_.time_ns(); }
+
+ private:
+  const SimulatedRobot& robot_;
 };
 
 }  // namespace safecell
