@@ -93,9 +93,7 @@ class TargetEthernet final : public LinkPort {
   TargetClock clock;
   TargetRobot robot;
   TargetEthernet ethernet;
-  MapStore store(
-      kLayout,
-      {{slots[0], slots[1]}, pool, free_blocks, changed_blocks, changed_hashes, block_hashes});
+  MapStore store(kLayout, store_memory.storage());
   ControllerLinkConfig link_config;
   link_config.grid_fingerprint = grid.value().fingerprint();
   ControllerLink link(link_config, ethernet, store);
