@@ -61,9 +61,10 @@ class ScriptedCoprocessor {
     return seal(now, 0, kFrameFlagHandshake);
   }
   // One chunk holding the whole update (the grid must be small enough for one frame).
+  // wrong_hash: the hash of another map (a sender fault the receiver must catch).
   Bytes update(const std::vector<std::uint64_t>* base, std::uint64_t base_version,
                const std::vector<std::uint64_t>& target, std::uint64_t version,
-               std::uint64_t capture, std::uint64_t now) {
+               std::uint64_t capture, std::uint64_t now, bool wrong_hash = false) {
     message_ = safecell_v1_Message_init_zero;
     message_.which_body = safecell_v1_Message_map_chunk_tag;
     safecell_v1_MapChunk& chunk = message_.body.map_chunk;
@@ -71,7 +72,7 @@ class ScriptedCoprocessor {
                       : safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
     chunk.map_version = version;
     chunk.base_version = base ? base_version : 0;
-    chunk.map_hash = map_hash(target.data(), cells_);
+    chunk.map_hash = map_hash(target.data(), cells_) ^ (wrong_hash ? 1u : 0u);
     chunk.chunk_count = 1;
     chunk.end_cell = cells_;
     chunk.healthy_cameras = 4;

@@ -1,0 +1,192 @@
+// The safety cycle's responses: held before a session and a verified map; moving on a free map;
+// category 2 stops from the look-ahead that lift when the cells ahead are free again; category 1
+// stops latched until acknowledged for every fault (the map too old, a hash mismatch, too few
+// cameras, a late cycle).
+
+#include "safecell/controller/safety_cycle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "safecell/controller/host/map_store_memory.hpp"
+#include "safecell/controller/host/simulated_robot.hpp"
+#include "scripted_coprocessor.hpp"
+
+namespace safecell {
+namespace {
+
+using Words = std::vector<std::uint64_t>;
+constexpr std::uint64_t kMs = 1'000'000;
+constexpr std::uint64_t kLuts = 0x1075;
+
+GridSpec spec() {
+  GridSpec grid;
+  grid.m_max_m = 0.1;
+  grid.joint_count = 3;
+  for (std::uint32_t j = 0; j < 3; ++j) grid.joints[j] = {-2.0, 2.0, 0.5, true};
+  return grid;
+}
+
+SimulatedRobotConfig robot_config() {
+  SimulatedRobotConfig config;
+  config.joint_count = 3;
+  for (std::uint32_t j = 0; j < 3; ++j) config.joints[j] = {-2.0, 2.0, 1.0, 4.0, 4.0};
+  return config;
+}
+
+class SafetyCycleTest : public ::testing::Test {
+ protected:
+  explicit SafetyCycleTest(std::uint32_t min_cameras = 1)
+      : grid_(CspaceGrid::create(spec()).value()),
+        robot_(robot_config()),
+        clock_(robot_),
+        store_(MapStoreLayout::of(grid_.cell_count(), default_pool_blocks(grid_.cell_count()))),
+        link_(link_config(), port_, store_.store()),
+        watchdog_({3 * kMs, 5 * kMs, 2 * kMs}),
+        cycle_(grid_, cycle_config(min_cameras), robot_, clock_, link_, store_.store(), watchdog_),
+        coprocessor_(grid_.fingerprint(), kLuts, 0x5E55, grid_.cell_count()),
+        free_(cell_bits::words_for(grid_.cell_count()), 0) {
+    robot_.set_time_ns(1'000'000'000);
+    planned_[0] = 0.5;
+  }
+
+  ControllerLinkConfig link_config() const {
+    ControllerLinkConfig config;
+    config.grid_fingerprint = grid_.fingerprint();
+    config.lut_fingerprint = kLuts;
+    return config;
+  }
+  static SafetyCycleConfig cycle_config(std::uint32_t min_cameras) {
+    SafetyCycleConfig config;
+    config.look_ahead.stop = SimulatedRobot::measure_stop_model(robot_config());
+    config.min_healthy_cameras = min_cameras;
+    return config;
+  }
+  std::uint64_t now() const { return robot_.time_ns(); }
+  // One cycle, then 4 ms of the robot (or `step_ms`).
+  const CycleReport& cycle(double step_ms = 4.0) {
+    const CycleReport& report = cycle_.run(planned_, true);
+    robot_.step(step_ms * 1e-3);
+    return report;
+  }
+  void send_map(const Words& map, bool wrong_hash = false) {
+    const Words* base = version_ == 0 ? nullptr : &held_;
+    port_.inbox.push_back(coprocessor_.update(base, version_, map, version_ + 1, now() - 10 * kMs,
+                                              now(), wrong_hash));
+    if (!wrong_hash) {
+      ++version_;
+      held_ = map;
+    }
+  }
+  void open_session() {
+    port_.inbox.push_back(coprocessor_.handshake(now()));
+    (void)cycle();
+  }
+  // Cycles with a fresh map every 8th, for `count` cycles; the last report.
+  CycleReport run_with_maps(int count, const Words& map) {
+    CycleReport last;
+    for (int i = 0; i < count; ++i) {
+      if (i % 8 == 0) send_map(map);
+      last = cycle();
+    }
+    return last;
+  }
+
+  CspaceGrid grid_;
+  SimulatedRobot robot_;
+  SimulatedClock clock_;
+  HostMapStore store_;
+  test::MemoryPort port_;
+  ControllerLink link_;
+  Watchdog watchdog_;
+  SafetyCycle cycle_;
+  test::ScriptedCoprocessor coprocessor_;
+  Words free_;
+  Words held_;
+  std::uint64_t version_ = 0;
+  double planned_[kMaxJoints] = {};
+};
+
+TEST_F(SafetyCycleTest, HeldUntilASessionAndAVerifiedKeyframe) {
+  EXPECT_EQ(cycle().state, CycleState::kWaiting);
+  open_session();
+  EXPECT_EQ(cycle().state, CycleState::kWaiting);
+  EXPECT_FALSE(robot_.moving());
+  const CycleReport moving = run_with_maps(40, free_);
+  EXPECT_EQ(moving.state, CycleState::kMoving);
+  EXPECT_TRUE(robot_.moving());
+}
+
+TEST_F(SafetyCycleTest, AMapThatGetsTooOldStopsTheRobotUntilAcknowledged) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  CycleReport report;
+  for (int i = 0; i < 30; ++i) report = cycle();  // 120 ms without a map: beyond T_wd
+  EXPECT_EQ(report.state, CycleState::kFault);
+  EXPECT_EQ(report.fault, CycleFault::kLink);
+  EXPECT_EQ(report.link_block, LinkBlock::kMapTooOld);
+  EXPECT_EQ(report.stop_category, StopCategory::kCategory1);
+  EXPECT_EQ(run_with_maps(16, free_).state, CycleState::kFault) << "latched";
+  cycle_.acknowledge();
+  EXPECT_NE(run_with_maps(200, free_).state, CycleState::kFault);
+  EXPECT_TRUE(robot_.powered());
+  EXPECT_TRUE(robot_.moving());
+}
+
+TEST_F(SafetyCycleTest, AHashMismatchStopsLatched) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  send_map(free_, true);
+  const CycleReport report = cycle();
+  EXPECT_EQ(report.state, CycleState::kFault);
+  EXPECT_EQ(report.fault, CycleFault::kMapRefused);
+  EXPECT_EQ(report.stop_category, StopCategory::kCategory1);
+}
+
+class SafetyCycleCamerasTest : public SafetyCycleTest {
+ protected:
+  SafetyCycleCamerasTest() : SafetyCycleTest(5) {}  // the scripted maps say 4 healthy cameras
+};
+
+TEST_F(SafetyCycleCamerasTest, TooFewHealthyCamerasStopLatched) {
+  open_session();
+  const CycleReport report = run_with_maps(16, free_);
+  EXPECT_EQ(report.state, CycleState::kFault);
+  EXPECT_EQ(report.fault, CycleFault::kCameras);
+  EXPECT_FALSE(robot_.moving());
+}
+
+TEST_F(SafetyCycleTest, ALateCycleIsAWatchdogFault) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  (void)cycle(12.0);  // the next cycle starts 12 ms later: outside the 3..5 ms window
+  const CycleReport report = cycle();
+  EXPECT_EQ(report.state, CycleState::kFault);
+  EXPECT_EQ(report.fault, CycleFault::kWatchdog);
+}
+
+TEST_F(SafetyCycleTest, ALookAheadStopIsCategoryTwoAndLiftsWhenTheWayIsFree) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  // Every cell ahead along joint 0 forbidden.
+  JointAngles here;
+  const RobotJoints joints = robot_.read();
+  for (std::uint32_t j = 0; j < 3; ++j) here.rad[j] = joints.position_rad[j];
+  const GridCoords at = grid_.coords_containing(here).value();
+  Words blocked = free_;
+  for (CellIndex c = 0; c < grid_.cell_count(); ++c) {
+    if (grid_.coords_of(c).value().along[0] > at.along[0] + 1) cell_bits::set(blocked.data(), c);
+  }
+  const CycleReport stopped = run_with_maps(40, blocked);
+  EXPECT_EQ(stopped.state, CycleState::kStopped);
+  EXPECT_EQ(stopped.stop_category, StopCategory::kCategory2);
+  EXPECT_TRUE(stopped.look_ahead.has_blocking_cell);
+  EXPECT_EQ(stopped.look_ahead.critical_joint, 0);
+  EXPECT_EQ(stopped.fault, CycleFault::kNone);
+  EXPECT_TRUE(robot_.powered());
+  EXPECT_EQ(run_with_maps(40, free_).state, CycleState::kMoving) << "no acknowledgement needed";
+}
+
+}  // namespace
+}  // namespace safecell
