@@ -65,6 +65,31 @@ bool GrossMotion::replan(const MapView& map, CellIndex from, std::uint64_t now_n
   return false;
 }
 
+bool GrossMotion::straight_free(const MapView& map, CellIndex from, CellIndex to) const noexcept {
+  const GridCoords a = grid_.coords_of(from).value();
+  const GridCoords b = grid_.coords_of(to).value();
+  GridCoords lo{};
+  GridCoords extent{};
+  for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
+    lo.along[j] = a.along[j] < b.along[j] ? a.along[j] : b.along[j];
+    extent.along[j] = (a.along[j] < b.along[j] ? b.along[j] : a.along[j]) - lo.along[j];
+    if (extent.along[j] > config_.local_cells) return false;
+  }
+  // Every cell of the box, with an odometer over the joints (at most (local_cells + 1)^joints).
+  GridCoords offset{};
+  for (;;) {
+    CellIndex cell = 0;
+    for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
+      cell += (lo.along[j] + offset.along[j]) * grid_.stride(j);
+    }
+    if (map.forbidden(cell)) return false;
+    std::uint32_t j = 0;
+    while (j < grid_.joint_count() && offset.along[j] == extent.along[j]) offset.along[j++] = 0;
+    if (j == grid_.joint_count()) return true;
+    ++offset.along[j];
+  }
+}
+
 bool GrossMotion::path_ahead_blocked(const MapView& map) const noexcept {
   for (std::uint32_t k = progress_.path_index + 1; k < progress_.path_length; ++k) {
     if (map.forbidden(planner_.path()[k])) return true;
@@ -100,7 +125,20 @@ void GrossMotion::plan_velocity(const RobotJoints& joints, const MapView& map,
   if (!here.ok()) return;  // outside the grid: the safety cycle stops the robot
 
   const bool new_map = map_version != planned_on_version_;
-  if (status == MotionStatus::kBlocked) {
+  // The local planner: straight to a near goal while the box between is free.
+  if (progress_.direct && new_map && !straight_free(map, here.value(), progress_.goal_cell)) {
+    progress_.direct = false;
+    progress_.path_length = 0;  // search from here
+  }
+  if (!progress_.direct && (new_map || progress_.path_length == 0) && config_.local_cells > 0 &&
+      straight_free(map, here.value(), progress_.goal_cell)) {
+    progress_.direct = true;
+    progress_.status = MotionStatus::kMoving;
+    blocked_since_ns_ = 0;
+  }
+  if (progress_.direct) {
+    planned_on_version_ = map_version;
+  } else if (status == MotionStatus::kBlocked) {
     if (!new_map) return;
     planned_on_version_ = map_version;
     if (!replan(map, here.value(), now_ns)) return;
@@ -112,8 +150,9 @@ void GrossMotion::plan_velocity(const RobotJoints& joints, const MapView& map,
     planned_on_version_ = map_version;
   }
 
-  // Towards the next cell's centre on the path, or the goal itself within the goal cell.
-  const bool in_goal_cell = progress_.path_index + 1 >= progress_.path_length;
+  // Towards the next cell's centre on the path, or the goal itself within the goal cell (or on
+  // the local planner's straight line).
+  const bool in_goal_cell = progress_.direct || progress_.path_index + 1 >= progress_.path_length;
   JointAngles target = goal_;
   if (!in_goal_cell) {
     const GridCoords next = grid_.coords_of(planner_.path()[progress_.path_index + 1]).value();

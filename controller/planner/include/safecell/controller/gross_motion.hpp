@@ -4,6 +4,10 @@
 // at speed scale 1; the safety cycle scales them by its look-ahead, so every step of the service
 // runs under the look-ahead like any other motion.
 //
+//   local steps  a goal within local_cells cells along every joint is approached in a straight
+//                line when every cell of the box between here and there is free (the local
+//                planner; no search), until a new map forbids one of them
+//
 //   re-planning  when the map changes and a cell still ahead on the path became forbidden, or the
 //                robot left the path (pushed by a stop, cutting a corner)
 //   blocked      no path now: the robot is held where it is (the last safe cell) and the service
@@ -26,7 +30,8 @@ struct GrossMotionConfig {
   double max_speed_rad_s[kMaxJoints]{};  // per joint, the motion's speed at scale 1
   double accel_rad_s2[kMaxJoints]{};     // used to slow down into the goal
   double goal_tolerance_rad = 0.005;
-  double give_up_s = 10.0;  // blocked this long without a path: failed
+  double give_up_s = 10.0;        // blocked this long without a path: failed
+  std::uint32_t local_cells = 4;  // the local planner's reach (0: always search)
 };
 
 enum class MotionStatus : std::uint8_t { kIdle, kMoving, kBlocked, kArrived, kFailed };
@@ -40,6 +45,7 @@ struct MotionProgress {
   std::uint32_t path_index = 0;  // the robot's cell on the path
   std::uint32_t path_length = 0;
   CellIndex goal_cell = 0;
+  bool direct = false;  // on a straight line to the goal (the local planner)
 };
 
 class GrossMotion {
@@ -61,6 +67,8 @@ class GrossMotion {
 
  private:
   bool replan(const MapView& map, CellIndex from, std::uint64_t now_ns) noexcept;
+  // The local planner: every cell of the box between the two cells free, within local_cells.
+  bool straight_free(const MapView& map, CellIndex from, CellIndex to) const noexcept;
   bool path_ahead_blocked(const MapView& map) const noexcept;
   bool find_on_path(CellIndex cell) noexcept;
 
