@@ -136,19 +136,16 @@ void GrossMotion::plan_velocity(const RobotJoints& joints, const MapView& map,
     progress_.status = MotionStatus::kMoving;
     blocked_since_ns_ = 0;
   }
-  if (progress_.direct) {
+  if (!progress_.direct) {
+    // Blocked: try again with each new map. Moving: search again when the robot left the path
+    // or a new map forbids a cell still ahead on it.
+    if (status == MotionStatus::kBlocked && !new_map) return;
+    const bool search = status == MotionStatus::kBlocked || progress_.path_length == 0 ||
+                        !find_on_path(here.value()) || (new_map && path_ahead_blocked(map));
     planned_on_version_ = map_version;
-  } else if (status == MotionStatus::kBlocked) {
-    if (!new_map) return;
-    planned_on_version_ = map_version;
-    if (!replan(map, here.value(), now_ns)) return;
-  } else if (progress_.path_length == 0 || !find_on_path(here.value()) ||
-             (new_map && path_ahead_blocked(map))) {
-    planned_on_version_ = map_version;
-    if (!replan(map, here.value(), now_ns)) return;
-  } else if (new_map) {
-    planned_on_version_ = map_version;
+    if (search && !replan(map, here.value(), now_ns)) return;
   }
+  planned_on_version_ = map_version;
 
   // Towards the next cell's centre on the path, or the goal itself within the goal cell (or on
   // the local planner's straight line).
