@@ -98,6 +98,48 @@ TEST_F(ControllerLinkTest, NoMotionUntilASessionAndAVerifiedKeyframe) {
   EXPECT_EQ(link_.block(132 * kMs), LinkBlock::kMapTooOld);
 }
 
+// A poll's map work is bounded (ControllerLinkConfig::map_work_per_poll): an update larger than
+// that is applied over several polls, the held map stays whole and old until the swap, and the
+// update's age counts from its capture.
+TEST_F(ControllerLinkTest, AnUpdateLargerThanAPollsShareIsAppliedOverSeveralPolls) {
+  ControllerLinkConfig sliced_config = config();
+  sliced_config.map_work_per_poll = 8;
+  ControllerLink link(sliced_config, port_, store_.store());
+  port_.inbox.push_back(coprocessor_.handshake(10 * kMs));
+  link.poll(10 * kMs);
+  ASSERT_TRUE(link.session_up());
+  std::vector<std::uint64_t> first(cell_bits::words_for(kCells), 0);
+  for (CellIndex c = 0; c + 3 < kCells; c += 11) cell_bits::set_range(first.data(), c, c + 3);
+  auto second = first;  // the delta clears the stripes below cell 2500
+  cell_bits::clear_range(second.data(), 0, 2500);
+  int polls = 0;
+  std::uint64_t now = 20 * kMs;
+  auto poll_until_version = [&](std::uint64_t version, const std::vector<std::uint64_t>& before) {
+    while (store_.store().version() != version && polls < 10000) {
+      EXPECT_EQ(held(), before);
+      const std::uint64_t done = store_.store().work_done();
+      link.poll(now += kMs / 4);
+      ++polls;
+      EXPECT_LT(store_.store().work_done() - done, 8u + kWorkPerBlock);
+    }
+  };
+  port_.inbox.push_back(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs));
+  std::vector<std::uint64_t> no_map(cell_bits::words_for(kCells), 0);
+  cell_bits::set_range(no_map.data(), 0, kCells);
+  poll_until_version(1, no_map);
+  EXPECT_EQ(held(), first);
+  EXPECT_GT(polls, 40);  // about 450 runs and 10 blocks, 8 units a poll
+  EXPECT_EQ(link.map_capture_ns(), 19 * kMs);
+  EXPECT_EQ(link.updates_applied(), 1u);
+  polls = 0;
+  port_.inbox.push_back(coprocessor_.update(&first, 1, second, 2, now - kMs, now));
+  poll_until_version(2, first);
+  EXPECT_EQ(held(), second);
+  EXPECT_GT(polls, 20);
+  EXPECT_EQ(link.updates_refused(), 0u);
+  EXPECT_EQ(link.latch().total(), 0u);  // no frame was late or refused
+}
+
 TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {
   deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
   deliver(coprocessor_.update(nullptr, 0, map_with(0, 10), 1, 19 * kMs, 20 * kMs), 21 * kMs);

@@ -80,10 +80,34 @@ TEST(MapStore, LayoutIsSizedFromTheGridAndPool) {
   EXPECT_EQ(default_pool_blocks(100), 16u);
 }
 
+// Offers `chunk` as the controller's link does: accept(), then work() in slices of small random
+// budgets until the chunk has an outcome, and sometimes the upkeep after it too. Each slice stays
+// within its budget (one step may overdraw it by less than kWorkPerBlock), and the held map stays
+// `before` until the slice that returns kApplied.
+MapOffer offer_in_slices(StoreReceiver& receiver, MapStore& store, const SentChunk& chunk,
+                         std::mt19937_64& rng, const Words& before) {
+  const std::uint64_t held_version = store.version();
+  MapOffer offer = store.accept(chunk.header, chunk.runs.data(), chunk.runs.size(), 1);
+  const bool upkeep_too = rng() % 2 == 0;
+  while (offer.outcome == MapOutcome::kWorking || (upkeep_too && store.busy())) {
+    const auto budget = static_cast<std::uint32_t>(1 + rng() % 24);
+    std::uint32_t left = budget;
+    const std::uint64_t done = store.work_done();
+    const MapOffer slice = store.work(left);
+    EXPECT_LT(store.work_done() - done, std::uint64_t{budget} + kWorkPerBlock);
+    if (offer.outcome == MapOutcome::kWorking) offer = slice;
+    if (offer.outcome == MapOutcome::kWorking) {
+      EXPECT_EQ(store.version(), held_version);
+      EXPECT_EQ(receiver.held(), before);
+    }
+  }
+  return offer;
+}
+
 // The same stream of chunks, with faults, to the store and to the dense reference: equal outcomes
-// and equal maps after every chunk, while the pool has room.
-TEST(MapStore, MatchesTheDenseReferenceUnderFaults) {
-  test::PropertyRun run(40);
+// and equal maps after every chunk, while the pool has room. `sliced`: the store works in slices.
+void matches_the_dense_reference(bool sliced) {
+  test::PropertyRun run(sliced ? 20 : 40);
   for (int i = 0; i < run.iterations(); ++i) {
     auto& rng = run.rng();
     const auto cells = static_cast<CellIndex>(1 + rng() % 60000);
@@ -112,8 +136,10 @@ TEST(MapStore, MatchesTheDenseReferenceUnderFaults) {
       input << " v" << version << (keyframe ? " key" : " delta") << " fault " << fault << " at "
             << at << ";";
       for (const SentChunk& chunk : chunks) {
+        const Words before = dense.held();
         const MapOffer expected = dense.offer(chunk);
-        const MapOffer got = store.offer(chunk);
+        const MapOffer got = sliced ? offer_in_slices(store, store.host_store(), chunk, rng, before)
+                                    : store.offer(chunk);
         ASSERT_EQ(got.outcome, expected.outcome) << input.str();
         ASSERT_EQ(got.refusal, expected.refusal) << input.str();
         ASSERT_EQ(store.store().version(), dense.version()) << input.str();
@@ -126,6 +152,11 @@ TEST(MapStore, MatchesTheDenseReferenceUnderFaults) {
       }
     }
   }
+}
+
+TEST(MapStore, MatchesTheDenseReferenceUnderFaults) { matches_the_dense_reference(false); }
+TEST(MapStore, WorkInSlicesMatchesTheDenseReferenceAndNeverShowsHalfAnUpdate) {
+  matches_the_dense_reference(true);
 }
 
 TEST(MapStore, AnUpdateShowsOnlyWhenWholeAndVerified) {

@@ -108,6 +108,28 @@ class SafetyCycleTest : public ::testing::Test {
   double planned_[kMaxJoints] = {};
 };
 
+// A cycle does one bounded slice of the link's map work; service_link() does the rest in the time
+// between cycles, up to its deadline, and stops when the link is idle.
+TEST_F(SafetyCycleTest, BetweenCyclesTheLinkWorksOnInSlicesUntilIdleOrTheDeadline) {
+  open_session();
+  Words striped(cell_bits::words_for(grid_.cell_count()), 0);
+  for (CellIndex c = 0; c + 2 < grid_.cell_count(); c += 16) {
+    cell_bits::set_range(striped.data(), c, c + 2);
+  }
+  send_map(striped);  // a keyframe of about 500 runs: several slices of work
+  (void)cycle();
+  EXPECT_EQ(store_.store().version(), 0u);
+  EXPECT_TRUE(store_.store().busy());
+  EXPECT_EQ(cycle_.service_link(now()), 0);  // no time left before the next cycle: no slice
+  EXPECT_EQ(store_.store().version(), 0u);
+  const int slices = cycle_.service_link(now() + 2 * kMs);
+  EXPECT_GT(slices, 3);
+  EXPECT_EQ(store_.store().version(), 1u);
+  EXPECT_FALSE(store_.store().busy());
+  EXPECT_EQ(cycle_.service_link(now() + 2 * kMs), 1);  // idle: one poll finds nothing
+  EXPECT_EQ(cycle().state, CycleState::kMoving);
+}
+
 TEST_F(SafetyCycleTest, HeldUntilASessionAndAVerifiedKeyframe) {
   EXPECT_EQ(cycle().state, CycleState::kWaiting);
   open_session();

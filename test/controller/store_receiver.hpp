@@ -31,6 +31,7 @@ class StoreReceiver {
     return words;
   }
   const MapStore& store() const { return host_.store(); }
+  MapStore& host_store() { return host_.store(); }
 
  private:
   CellIndex cells_;

@@ -83,7 +83,7 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
 
   report_.joints = robot_.read();
   watchdog_.checkpoint(CycleStep::kReadJoints);
-  link_.poll(now);
+  (void)link_.poll(now);  // one slice; service_link() does more between cycles
   watchdog_.checkpoint(CycleStep::kPollLink);
 
   const CycleFault fault = detect_fault(report_.joints, now);
@@ -129,6 +129,15 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
     robot_.stop(config_.fault_stop);
   }
   return report_;
+}
+
+int SafetyCycle::service_link(std::uint64_t until_ns) noexcept {
+  int slices = 0;
+  for (std::uint64_t now = clock_.now_ns(); now < until_ns; now = clock_.now_ns()) {
+    ++slices;
+    if (!link_.poll(now)) break;
+  }
+  return slices;
 }
 
 CycleFault SafetyCycle::detect_fault(const RobotJoints& joints, std::uint64_t now_ns) noexcept {

@@ -1,14 +1,19 @@
 // safecell-controller-bench: the controller core's costs on a host core, with Google Benchmark.
 //
 //   controller_cycle   SafetyCycle::run at 250 Hz with a map delta every 8th cycle (maps at
-//                      30 Hz), at most 4 frames per cycle: link frames checked, the delta applied
-//                      and verified in the map store, the look-ahead, the watchdog, the commands
-//                      and the joint report. Per-cycle times give p50, p99 and the worst (the
-//                      test suite proves no allocation).
-//     _every_delta     the same with a delta arriving in every cycle (the worst cadence)
-//     _one_frame       a delta in every cycle and at most one frame per cycle (the bound a
-//                      controller with a tighter cycle budget would configure)
-//   delta_apply        MapStore::offer of every chunk of one delta
+//                      30 Hz), with the link's default share of a cycle (map_work_per_poll): link
+//                      frames checked, the delta applied and verified in the map store in slices,
+//                      the look-ahead, the watchdog, the commands and the joint report. Per-cycle
+//                      times give p50, p99 and the worst (the test suite proves no allocation);
+//                      Between cycles the link works on in further slices (the idle time of a
+//                      4 ms cycle), each timed: slice_p99_us. update_cycles: the cycles from an
+//                      update's first frame to its swap.
+//     _every_delta     the same with the next delta as soon as the last one is read (the worst
+//                      cadence: the link works on a map in nearly every cycle)
+//     _unsliced        every delta in the cycle it arrives, whole (no work limit): the cost the
+//                      slicing spreads out, for comparison
+//   delta_apply        MapStore::offer of every chunk of one delta; ns_per_unit: the time of one
+//                      unit of MapStore work (map_store.hpp), to size map_work_per_poll
 //   planner            GridPlanner::plan between free cells of the maps (seeded pairs)
 //   map_store_memory   the store's bytes for the grid and, with m_max = 6 cm, the ~14 M-cell
 //                      grid, with the mixed blocks the maps need (upsampled to the fine grid)
@@ -99,6 +104,18 @@ MapSequence synthetic_maps(const GridSpec& spec, int count) {
   return sequence;
 }
 
+// --quick: no figures of the fine (6 cm) grid, whose maps take seconds to make.
+bool& quick() {
+  static bool on = false;
+  return on;
+}
+
+// --map-work=N: ControllerLinkConfig::map_work_per_poll for the sliced cycles (0: its default).
+std::uint32_t& map_work_per_poll() {
+  static std::uint32_t units = 0;
+  return units;
+}
+
 MapSequence& maps() {
   static MapSequence sequence;
   return sequence;
@@ -184,6 +201,7 @@ class QueuePort final : public LinkPort {
     std::memcpy(buffer, frame.data(), frame.size());
     return frame.size();
   }
+  bool drained() const { return next_ >= frames.size(); }
   void load(std::vector<std::vector<std::uint8_t>> loaded) {
     frames = std::move(loaded);
     next_ = 0;
@@ -213,7 +231,7 @@ JointAngles free_configuration(const CspaceGrid& grid, const Words& map) {
 }
 
 // delta_every: a delta arrives every this many cycles (8: maps at 30 Hz, the cycle at 250 Hz).
-void controller_cycle_with(benchmark::State& state, int delta_every, int frames_per_poll) {
+void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced) {
   const MapSequence& sequence = maps();
   const CspaceGrid grid = CspaceGrid::create(sequence.grid).value();
   const CellIndex cells = grid.cell_count();
@@ -223,7 +241,11 @@ void controller_cycle_with(benchmark::State& state, int delta_every, int frames_
   ControllerLinkConfig link_config;
   link_config.grid_fingerprint = grid.fingerprint();
   link_config.lut_fingerprint = kLuts;
-  link_config.max_frames_per_poll = frames_per_poll;
+  if (map_work_per_poll() > 0) link_config.map_work_per_poll = map_work_per_poll();
+  if (!sliced) {
+    link_config.map_work_per_poll = MapStore::kUnlimited;
+    link_config.max_frames_per_poll = ControllerLink::kMaxFramesPerPoll;
+  }
   ControllerLink link(link_config, port, store.store());
   SimulatedRobotConfig robot_config;
   robot_config.joint_count = grid.joint_count();
@@ -248,24 +270,42 @@ void controller_cycle_with(benchmark::State& state, int delta_every, int frames_
   clock.now += 4'000'000;
   port.load(source.update(nullptr, 0, sequence.maps.front(), version, cells, clock.now - 50'000'000,
                           clock.now));
-  (void)cycle.run(planned, true);
+  for (int c = 0; c < 10000 && store.store().version() != version; ++c) {
+    (void)cycle.run(planned, true);
+    while (link.poll(clock.now)) {
+    }
+    clock.now += 4'000'000;
+    robot.set_time_ns(clock.now);
+  }
+  if (store.store().version() != version) {
+    state.SkipWithError("the first keyframe was not applied");
+    return;
+  }
   std::vector<double> cycle_us;
-  std::size_t next = 1;
   std::size_t lines = 0;
   std::size_t frames = 0;
   std::uint64_t cycle_count = 0;
+  // Deltas go from the map the store holds (a lost update is not assumed applied).
+  std::size_t held_index = 0;
+  std::size_t sent_index = 0;
+  std::uint64_t sent_version = version;
+  std::uint64_t updates_sent = 0;
+  std::uint64_t update_sent_cycle = 0;
+  std::vector<double> update_cycles;
+  std::vector<double> slice_us;
   while (state.KeepRunning()) {
     clock.now += 4'000'000;
-    // A new delta when the last one is in (frames left over from a bounded poll come first).
-    if (++cycle_count % static_cast<std::uint64_t>(delta_every) == 0 &&
-        store.store().version() == version) {
-      const std::size_t from = next - 1 < sequence.maps.size() ? next - 1 : 0;
-      const std::size_t to = next % sequence.maps.size();
-      auto update = source.update(&sequence.maps[from], version, sequence.maps[to], version + 1,
-                                  cells, clock.now - 50'000'000, clock.now);
+    // A new update once the last one is read and worked in (bounded polls leave some over).
+    if (++cycle_count % static_cast<std::uint64_t>(delta_every) == 0 && port.drained() &&
+        !store.store().chunk_in_work()) {
+      sent_index = (sent_index + 1) % sequence.maps.size();
+      ++sent_version;
+      auto update = source.update(&sequence.maps[held_index], version, sequence.maps[sent_index],
+                                  sent_version, cells, clock.now - 50'000'000, clock.now);
       frames += update.size();
+      ++updates_sent;
       port.load(std::move(update));
-      next = to + 1;
+      update_sent_cycle = cycle_count;
     }
     const auto begin = std::chrono::steady_clock::now();
     const CycleReport& report = cycle.run(planned, true);
@@ -274,15 +314,37 @@ void controller_cycle_with(benchmark::State& state, int delta_every, int frames_
     state.SetIterationTime(seconds);
     cycle_us.push_back(seconds * 1e6);
     lines += report.look_ahead.lines_checked;
-    if (store.store().version() == version + 1) ++version;
+    // The idle time before the next cycle: more slices of the link's work (as
+    // SafetyCycle::service_link does against the real clock), each timed.
+    for (int slice = 0; sliced && slice < 100'000; ++slice) {
+      const auto slice_begin = std::chrono::steady_clock::now();
+      const bool more = link.poll(clock.now);
+      const auto slice_end = std::chrono::steady_clock::now();
+      slice_us.push_back(std::chrono::duration<double>(slice_end - slice_begin).count() * 1e6);
+      if (!more) break;
+    }
+    if (store.store().version() != version) {
+      version = store.store().version();
+      held_index = sent_index;
+      update_cycles.push_back(static_cast<double>(cycle_count - update_sent_cycle + 1));
+    }
     robot.set_time_ns(clock.now);
   }
+  // Updates the link did not apply: refused, or their frames too old when read (the work per
+  // poll too small for the maps' rate). Any is a configuration to change, so it is reported.
+  state.counters["updates_lost"] = static_cast<double>(updates_sent - update_cycles.size());
+  state.counters["link_errors"] = static_cast<double>(link.latch().total());
   state.counters["p50_us"] = percentile(cycle_us, 0.5);
   state.counters["p99_us"] = percentile(cycle_us, 0.99);
   state.counters["worst_us"] = percentile(cycle_us, 1.0);
-  state.counters["maps_applied"] = static_cast<double>(version);
+  state.counters["maps_applied"] = static_cast<double>(update_cycles.size());
+  state.counters["slice_p99_us"] = percentile(slice_us, 0.99);
+  state.counters["slice_worst_us"] = percentile(slice_us, 1.0);
+  state.counters["update_cycles_p50"] = percentile(update_cycles, 0.5);
+  state.counters["update_cycles_p99"] = percentile(update_cycles, 0.99);
+
   state.counters["frames_per_delta"] =
-      static_cast<double>(frames) / static_cast<double>(version > 1 ? version - 1 : 1);
+      static_cast<double>(frames) / static_cast<double>(updates_sent > 0 ? updates_sent : 1);
   state.counters["box_lines_per_cycle"] =
       static_cast<double>(lines) / static_cast<double>(cycle_us.empty() ? 1 : cycle_us.size());
 }
@@ -321,9 +383,11 @@ SentDelta delta_of(const Words& base, std::uint64_t base_version, const Words& t
   return delta;
 }
 
-void controller_cycle(benchmark::State& state) { controller_cycle_with(state, 8, 4); }
-void controller_cycle_every_delta(benchmark::State& state) { controller_cycle_with(state, 1, 4); }
-void controller_cycle_one_frame(benchmark::State& state) { controller_cycle_with(state, 1, 1); }
+void controller_cycle(benchmark::State& state) { controller_cycle_with(state, 8, true); }
+void controller_cycle_every_delta(benchmark::State& state) {
+  controller_cycle_with(state, 1, true);
+}
+void controller_cycle_unsliced(benchmark::State& state) { controller_cycle_with(state, 8, false); }
 
 void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence, CellIndex cells) {
   HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
@@ -334,10 +398,12 @@ void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence,
   std::uint64_t version = 1;
   std::size_t held = 0;
   std::vector<double> apply_us;
+  double units = 0;
   while (state.KeepRunning()) {
     const std::size_t to = (held + 1) % sequence.size();
     const SentDelta delta =
         delta_of(sequence[held], version, sequence[to], version + 1, cells, false);
+    const std::uint64_t done = store.store().work_done();
     const auto begin = std::chrono::steady_clock::now();
     MapOffer offer;
     for (std::size_t c = 0; c < delta.headers.size(); ++c) {
@@ -347,6 +413,7 @@ void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence,
     const double seconds = std::chrono::duration<double>(end - begin).count();
     state.SetIterationTime(seconds);
     apply_us.push_back(seconds * 1e6);
+    units += static_cast<double>(store.store().work_done() - done);
     if (offer.outcome != MapOutcome::kApplied) {
       state.SkipWithError("a delta of the sequence was refused");
       return;
@@ -357,6 +424,60 @@ void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence,
   state.counters["p50_us"] = percentile(apply_us, 0.5);
   state.counters["p99_us"] = percentile(apply_us, 0.99);
   state.counters["worst_us"] = percentile(apply_us, 1.0);
+  double total_us = 0;
+  for (const double us : apply_us) total_us += us;
+  state.counters["ns_per_unit"] = units > 0 ? total_us * 1e3 / units : 0.0;
+  state.counters["units_p50"] = units / static_cast<double>(apply_us.empty() ? 1 : apply_us.size());
+}
+
+// The time of MapStore work by kind, to weigh its units (map_store.hpp): deltas back and forth
+// between an empty map and (a) short runs packed into 4 blocks, (b) one run over each of 256
+// blocks. ns_per_run and ns_per_block solve t = runs * a + blocks * b over the two.
+void map_work_costs(benchmark::State& state) {
+  constexpr CellIndex kCells = 256 * kStoreBlockCells;
+  const Words empty(cell_bits::words_for(kCells), 0);
+  Words packed = empty;
+  for (CellIndex c = 0; c < 4 * kStoreBlockCells; c += 8)
+    cell_bits::set_range(packed.data(), c, c + 3);
+  Words spread = empty;
+  for (CellIndex b = 0; b < 256; ++b) {
+    cell_bits::set_range(spread.data(), b * kStoreBlockCells, (b + 1) * kStoreBlockCells - 1);
+  }
+  HostMapStore store(MapStoreLayout::of(kCells, default_pool_blocks(kCells)));
+  const SentDelta key = delta_of(empty, 0, empty, 1, kCells, true);
+  (void)store.store().offer(key.headers[0], key.runs[0].data(), key.runs[0].size(), 1);
+  std::uint64_t version = 1;
+  double packed_us = 0;
+  double spread_us = 0;
+  std::uint64_t rounds = 0;
+  auto apply = [&](const Words& from, const Words& to) {
+    const SentDelta delta = delta_of(from, version, to, version + 1, kCells, false);
+    const auto begin = std::chrono::steady_clock::now();
+    for (std::size_t c = 0; c < delta.headers.size(); ++c) {
+      (void)store.store().offer(delta.headers[c], delta.runs[c].data(), delta.runs[c].size(), 1);
+    }
+    const auto end = std::chrono::steady_clock::now();
+    ++version;
+    return std::chrono::duration<double>(end - begin).count() * 1e6;
+  };
+  while (state.KeepRunning()) {
+    const double packed_round = apply(empty, packed) + apply(packed, empty);
+    const double spread_round = apply(empty, spread) + apply(spread, empty);
+    state.SetIterationTime((packed_round + spread_round) * 1e-6);
+    packed_us += packed_round;
+    spread_us += spread_round;
+    ++rounds;
+  }
+  if (store.store().version() != version) {
+    state.SkipWithError("a delta was refused");
+    return;
+  }
+  // Per delta: packed = 256 runs + 4 blocks (+4 made level); spread = 256 runs + 256 blocks (+256).
+  const double per_delta = 2.0 * static_cast<double>(rounds);
+  const double block_ns = (spread_us - packed_us) / per_delta / 252.0 * 1e3;
+  const double run_ns = (packed_us / per_delta * 1e3 - 4.0 * block_ns) / 256.0;
+  state.counters["ns_per_run"] = run_ns;
+  state.counters["ns_per_block"] = block_ns;
 }
 
 void delta_apply(benchmark::State& state) { delta_apply_on(state, maps().maps, maps().cell_count); }
@@ -476,8 +597,10 @@ void map_store_memory(benchmark::State& state) {
   while (state.KeepRunning()) {
     mixed = degraded = fine_mixed = fine_degraded = 0;
     hold_all(sequence.maps, cells, default_pool_blocks(cells), mixed, degraded);
-    hold_all(fine_maps(), fine.cell_count(), default_pool_blocks(fine.cell_count()), fine_mixed,
-             fine_degraded);
+    if (!quick()) {
+      hold_all(fine_maps(), fine.cell_count(), default_pool_blocks(fine.cell_count()), fine_mixed,
+               fine_degraded);
+    }
   }
   const MapStoreLayout layout = MapStoreLayout::of(cells, default_pool_blocks(cells));
   const MapStoreLayout fine_layout =
@@ -488,6 +611,7 @@ void map_store_memory(benchmark::State& state) {
   state.counters["blocks"] = layout.blocks;
   state.counters["mixed_blocks_max"] = mixed;
   state.counters["degraded_blocks_max"] = degraded;
+  if (quick()) return;
   state.counters["fine_cells"] = fine.cell_count();
   state.counters["fine_map_store_bytes"] = static_cast<double>(fine_layout.bytes());
   state.counters["fine_dense_double_buffer_bytes"] =
@@ -498,6 +622,10 @@ void map_store_memory(benchmark::State& state) {
 }
 
 void delta_apply_fine(benchmark::State& state) {
+  if (quick()) {
+    state.SkipWithError("not run with --quick");
+    return;
+  }
   const CspaceGrid fine = CspaceGrid::create(fine_grid(maps().grid)).value();
   delta_apply_on(state, fine_maps(), fine.cell_count());
 }
@@ -513,6 +641,7 @@ class CounterCollector final : public benchmark::ConsoleReporter {
       }
     }
   }
+  bool has(const std::string& key) const { return counters_.count(key) > 0; }
   double get(const std::string& key) const {
     const auto found = counters_.find(key);
     return found == counters_.end() ? -1.0 : found->second;
@@ -525,8 +654,9 @@ class CounterCollector final : public benchmark::ConsoleReporter {
 // Timed by their own clocks (manual time); the memory report runs once.
 BENCHMARK(controller_cycle)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(controller_cycle_every_delta)->UseManualTime()->Unit(benchmark::kMicrosecond);
-BENCHMARK(controller_cycle_one_frame)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(controller_cycle_unsliced)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(delta_apply)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(map_work_costs)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(delta_apply_fine)
     ->Name("delta_apply_fine_grid")
     ->UseManualTime()
@@ -549,12 +679,19 @@ int main(int argc, char** argv) {
     const std::string argument = argv[i];
     if (argument.rfind("--maps=", 0) == 0) {
       maps_path = argument.substr(7);
+    } else if (argument.rfind("--map-work=", 0) == 0) {
+      map_work_per_poll() = static_cast<std::uint32_t>(std::stoul(argument.substr(11)));
+    } else if (argument == "--quick") {
+      quick() = true;
     } else if (argument == "--json") {
       json = true;
     } else if (argument == "--help" || argument == "-h") {
       std::cout << "safecell-controller-bench [--maps=FILE] [--json] [Google Benchmark flags]\n"
                    "  --maps=FILE  the maps to run on (written by `safecell bench`); default:\n"
                    "               synthetic maps on the default cell's grid\n"
+                   "  --map-work=N the link's map work per cycle, in MapStore units\n"
+                   "               (default: ControllerLinkConfig's)\n"
+                   "  --quick      without the fine (6 cm) grid's figures\n"
                    "  --json       one JSON object of the named figures at the end\n";
       return 0;
     } else {
@@ -579,12 +716,23 @@ int main(int argc, char** argv) {
         {"controller_cycle_every_delta_p50_us", "controller_cycle_every_delta.p50_us"},
         {"controller_cycle_every_delta_p99_us", "controller_cycle_every_delta.p99_us"},
         {"controller_cycle_every_delta_worst_us", "controller_cycle_every_delta.worst_us"},
-        {"controller_cycle_one_frame_p99_us", "controller_cycle_one_frame.p99_us"},
-        {"controller_cycle_one_frame_worst_us", "controller_cycle_one_frame.worst_us"},
+        {"controller_cycle_unsliced_p99_us", "controller_cycle_unsliced.p99_us"},
+        {"controller_cycle_unsliced_worst_us", "controller_cycle_unsliced.worst_us"},
+        {"controller_link_slice_p99_us", "controller_cycle.slice_p99_us"},
+        {"controller_link_slice_worst_us", "controller_cycle.slice_worst_us"},
+        {"controller_update_cycles_p50", "controller_cycle.update_cycles_p50"},
+        {"controller_update_cycles_p99", "controller_cycle.update_cycles_p99"},
+        {"controller_every_delta_update_cycles_p99",
+         "controller_cycle_every_delta.update_cycles_p99"},
         {"controller_frames_per_delta", "controller_cycle.frames_per_delta"},
+        {"controller_updates_lost", "controller_cycle.updates_lost"},
+        {"controller_every_delta_updates_lost", "controller_cycle_every_delta.updates_lost"},
         {"delta_apply_us", "delta_apply.p50_us"},
         {"delta_apply_p99_us", "delta_apply.p99_us"},
         {"delta_apply_worst_us", "delta_apply.worst_us"},
+        {"map_work_ns_per_unit", "delta_apply.ns_per_unit"},
+        {"map_work_ns_per_run", "map_work_costs.ns_per_run"},
+        {"map_work_ns_per_block", "map_work_costs.ns_per_block"},
         {"delta_apply_14m_us", "delta_apply_fine_grid.p50_us"},
         {"delta_apply_14m_worst_us", "delta_apply_fine_grid.worst_us"},
         {"planner_ms", "planner.p50_ms"},
@@ -605,6 +753,7 @@ int main(int argc, char** argv) {
     std::printf("\n{");
     bool first = true;
     for (const auto& [key, counter] : figures) {
+      if (!collector.has(counter)) continue;  // not run (--quick, a filter, an error)
       std::printf("%s\n  \"%s\": %.6g", first ? "" : ",", key, collector.get(counter));
       first = false;
     }

@@ -51,15 +51,20 @@ ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& por
       sealer_(LinkEndpoints{}),
       latch_(config.latch_window_ns) {}
 
-void ControllerLink::poll(std::uint64_t now_ns) noexcept {
+bool ControllerLink::poll(std::uint64_t now_ns) noexcept {
   const int limit = config_.max_frames_per_poll < 1                   ? 1
                     : config_.max_frames_per_poll > kMaxFramesPerPoll ? kMaxFramesPerPoll
                                                                       : config_.max_frames_per_poll;
+  budget_ = config_.map_work_per_poll;
+  if (store_.busy()) map_outcome(store_.work(budget_), now_ns);
   for (int frame = 0; frame < limit; ++frame) {
+    if (store_.chunk_in_work() || (frame > 0 && budget_ < kWorkPerFrame)) return true;
     const std::size_t size = port_.receive(datagram_, sizeof datagram_);
-    if (size == 0) return;
+    if (size == 0) return store_.busy();
+    budget_ = budget_ > kWorkPerFrame ? budget_ - kWorkPerFrame : 0;
     handle_datagram(datagram_, size, now_ns);
   }
+  return true;
 }
 
 void ControllerLink::detected(const LinkFault& fault, std::uint64_t now_ns) noexcept {
@@ -198,11 +203,19 @@ void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns
 
 void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
                                       std::uint64_t now_ns) noexcept {
-  const MapOffer offer = store_.offer(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size,
-                                      frame.header.capture_time_ns);
+  // The chunk's runs stay in incoming_ while the store works on them: poll() reads no frame
+  // until the store has the chunk's outcome.
+  update_healthy_cameras_ = chunk.healthy_cameras;
+  MapOffer offer = store_.accept(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size,
+                                 frame.header.capture_time_ns);
+  if (offer.outcome == MapOutcome::kWorking) offer = store_.work(budget_);
+  map_outcome(offer, now_ns);
+}
+
+void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) noexcept {
   if (offer.outcome == MapOutcome::kApplied) {
     map_applied_ns_ = now_ns;
-    healthy_cameras_ = chunk.healthy_cameras;
+    healthy_cameras_ = update_healthy_cameras_;
     ++updates_applied_;
     return;
   }

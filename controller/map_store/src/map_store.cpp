@@ -38,44 +38,203 @@ void MapStore::reset() noexcept {
   capture_ns_ = 0;
   sequence_ = MapUpdateSequence{};
   changed_count_ = 0;
-  abandon();
+  chunk_waiting_ = false;
+  have_run_ = false;
+  make_idle();
 }
 
 MapOffer MapStore::offer(const MapChunkHeader& header, const std::uint8_t* runs,
                          std::size_t runs_size, std::uint64_t capture_ns) noexcept {
+  MapOffer offer = accept(header, runs, runs_size, capture_ns);
+  std::uint32_t budget = kUnlimited;
+  while (busy()) {
+    const MapOffer outcome = work(budget);
+    if (outcome.outcome != MapOutcome::kWorking) offer = outcome;
+  }
+  return offer;
+}
+
+MapOffer MapStore::accept(const MapChunkHeader& header, const std::uint8_t* runs,
+                          std::size_t runs_size, std::uint64_t capture_ns) noexcept {
+  std::uint32_t unlimited = kUnlimited;
+  while (chunk_in_work()) (void)work(unlimited);  // a caller that did not wait
   const MapUpdateSequence::Verdict verdict = sequence_.check(header, version_);
   if (verdict.step == MapUpdateSequence::Step::kIgnore) {
     return {MapOutcome::kIgnored, MapRefusal::kNone};
   }
   if (verdict.step == MapUpdateSequence::Step::kRefuse) return drop(header, verdict.refusal);
-  if (verdict.step == MapUpdateSequence::Step::kBegin) {
+  const bool begins = verdict.step == MapUpdateSequence::Step::kBegin;
+  if (begins) {
     abandon();  // the rest of an update being collected was lost
-    begin_stream(header.kind, capture_ns);
   } else if (capture_ns < update_capture_ns_) {
     update_capture_ns_ = capture_ns;
   }
-  // One pass: the runs are checked as they are applied (a malformed chunk leaves only the
-  // working table touched, and drop() undoes that).
-  const MapChunkView chunk{header.kind, header.first_cell, header.end_cell, runs, runs_size};
   if (header.first_cell > header.end_cell || header.end_cell > layout_.cell_count ||
-      (runs == nullptr && runs_size != 0) || !apply_runs(chunk)) {
+      (runs == nullptr && runs_size != 0)) {
     return drop(header, MapRefusal::kBadChunk);
   }
-  if (inexact_) return drop(header, MapRefusal::kBaseInexact);
-  const MapUpdateSequence::Progress progress = sequence_.advanced(header, layout_.cell_count);
+  chunk_waiting_ = true;
+  chunk_begins_ = begins;
+  chunk_ = header;
+  chunk_runs_ = runs;
+  chunk_runs_size_ = runs_size;
+  chunk_capture_ns_ = capture_ns;
+  return {MapOutcome::kWorking, MapRefusal::kNone};
+}
+
+MapOffer MapStore::work(std::uint32_t& budget) noexcept {
+  while (budget > 0) {
+    if (phase_ == Phase::kIdle) {
+      if (!chunk_waiting_) break;
+      start_chunk();
+    }
+    const std::uint64_t before = work_done_;
+    MapOffer outcome{MapOutcome::kWorking, MapRefusal::kNone};
+    switch (phase_) {
+      case Phase::kLevel:
+        outcome = level_step();
+        break;
+      case Phase::kRuns:
+        outcome = runs_step();
+        break;
+      case Phase::kFinish:
+        outcome = finish_step();
+        break;
+      case Phase::kIdle:
+        break;
+    }
+    const std::uint64_t spent = work_done_ - before;
+    budget = spent >= budget ? 0 : budget - static_cast<std::uint32_t>(spent);
+    if (outcome.outcome != MapOutcome::kWorking) return outcome;
+  }
+  return {MapOutcome::kWorking, MapRefusal::kNone};
+}
+
+void MapStore::start_chunk() noexcept {
+  // The working table is level with the held one here (phase kIdle).
+  chunk_waiting_ = false;
+  if (chunk_begins_) begin_stream(chunk_.kind, chunk_capture_ns_);
+  reader_ = RunReader(chunk_runs_, chunk_runs_size_, chunk_.first_cell, chunk_.end_cell);
+  have_run_ = false;
+  phase_ = Phase::kRuns;
+}
+
+MapOffer MapStore::level_step() noexcept {
+  // One changed block: the working table takes the held table's slot again, and the pool block
+  // the working table had there is free (after a swap: the old map's; after a refusal: the
+  // update's).
+  if (level_next_ < changed_count_) {
+    std::uint32_t* work = storage_.slots[1 - held_];
+    const std::uint32_t block = storage_.changed_blocks[level_next_];
+    if (is_pool_slot(work[block])) storage_.free_blocks[free_count_++] = work[block];
+    work[block] = storage_.slots[held_][block];
+    if (swapped_) storage_.block_hashes[block] = storage_.changed_hashes[level_next_];
+    ++level_next_;
+    work_done_ += kWorkPerLevel;
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
+  make_idle();
+  return {MapOutcome::kWorking, MapRefusal::kNone};
+}
+
+void MapStore::make_idle() noexcept {
+  // The working table equals the held one: no update in it.
+  changed_count_ = 0;
+  level_next_ = 0;
+  swapped_ = false;
+  update_combined_ = combined_;
+  update_degraded_ = degraded_blocks_;
+  next_block_ = 0;
+  loaded_ = false;
+  inexact_ = false;
+  phase_ = Phase::kIdle;
+}
+
+MapOffer MapStore::runs_step() noexcept {
+  if (!have_run_) {
+    work_done_ += kWorkPerRun;
+    const Result<CellRun> next = reader_.next();
+    if (!next.ok()) {
+      // The end, or a malformed record.
+      if (next.error() != Status::kEmpty) return drop(chunk_, MapRefusal::kBadChunk);
+      return chunk_done();
+    }
+    run_ = next.value();
+    if (keyframe_ && !run_.value) return drop(chunk_, MapRefusal::kBadChunk);  // only sets cells
+    have_run_ = true;
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
+  if (run_.begin >= run_.end) {
+    have_run_ = false;
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
+  const std::uint32_t block = run_.begin / kStoreBlockCells;
+  // Runs come in grid order (check_map_chunk and the update sequence saw to it).
+  if (block < next_block_) return drop(chunk_, MapRefusal::kBadChunk);
+  if (loaded_ && block != next_block_) {
+    finish_loaded();
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
+  if (!loaded_ && next_block_ < block) {
+    // The blocks no run touched: a keyframe clears them; a delta keeps them as they are.
+    if (!keyframe_) {
+      next_block_ = block;
+    } else {
+      const std::uint64_t zeros[kStoreBlockWords] = {};
+      store(next_block_++, zeros);
+      return {MapOutcome::kWorking, MapRefusal::kNone};
+    }
+  }
+  const CellIndex block_first = block * kStoreBlockCells;
+  const CellIndex block_end = block_first + kStoreBlockCells < layout_.cell_count
+                                  ? block_first + kStoreBlockCells
+                                  : layout_.cell_count;
+  const CellIndex segment_end = run_.end < block_end ? run_.end : block_end;
+  const bool whole = run_.begin == block_first && segment_end == block_end;
+  if (!loaded_) load_block(block, whole);
+  if (whole) {
+    for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+      scratch_[w] = run_.value ? valid_bits(block, w) : 0;
+    }
+  } else if (run_.value) {
+    cell_bits::set_range(scratch_, run_.begin - block_first, segment_end - block_first);
+  } else {
+    cell_bits::clear_range(scratch_, run_.begin - block_first, segment_end - block_first);
+  }
+  run_.begin = segment_end;
+  return {MapOutcome::kWorking, MapRefusal::kNone};
+}
+
+MapOffer MapStore::chunk_done() noexcept {
+  if (inexact_) return drop(chunk_, MapRefusal::kBaseInexact);
+  const MapUpdateSequence::Progress progress = sequence_.advanced(chunk_, layout_.cell_count);
   if (progress == MapUpdateSequence::Progress::kBadChunk) {
-    return drop(header, MapRefusal::kBadChunk);
+    return drop(chunk_, MapRefusal::kBadChunk);
   }
   if (progress == MapUpdateSequence::Progress::kPending) {
+    phase_ = Phase::kIdle;
     return {MapOutcome::kPending, MapRefusal::kNone};
   }
-  // The last chunk: finish the stream (the blocks after the last run), then check the hash.
-  if (loaded_) finish_loaded();
-  pass_until(layout_.blocks);
-  if (inexact_) return drop(header, MapRefusal::kBaseInexact);
+  phase_ = Phase::kFinish;
+  return {MapOutcome::kWorking, MapRefusal::kNone};
+}
+
+MapOffer MapStore::finish_step() noexcept {
+  // The blocks after the last run (a keyframe clears them, a delta keeps them), then the check.
+  if (loaded_) {
+    finish_loaded();
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
+  if (keyframe_ && next_block_ < layout_.blocks) {
+    const std::uint64_t zeros[kStoreBlockWords] = {};
+    store(next_block_++, zeros);
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
+  work_done_ += kWorkPerRun;
+  if (inexact_) return drop(chunk_, MapRefusal::kBaseInexact);
   const std::uint64_t hash = map_hash_from_combined(update_combined_, layout_.cell_count);
-  if (hash != sequence_.update().map_hash) return drop(header, MapRefusal::kHashMismatch);
-  commit(sequence_.update().map_version, hash);
+  if (hash != sequence_.update().map_hash) return drop(chunk_, MapRefusal::kHashMismatch);
+  swap_in(sequence_.update().map_version, hash);
   sequence_.finished();
   return {MapOutcome::kApplied, MapRefusal::kNone};
 }
@@ -90,88 +249,36 @@ void MapStore::begin_stream(MapChunkKind kind, std::uint64_t capture_ns) noexcep
   keyframe_ = kind == MapChunkKind::kKeyframe;
   update_capture_ns_ = capture_ns;
   update_combined_ = combined_;
+  update_degraded_ = degraded_blocks_;
 }
 
 void MapStore::abandon() noexcept {
-  // Undo the working table's changes: it equals the held table again, and the pool blocks the
-  // update took are free.
-  std::uint32_t* work = storage_.slots[1 - held_];
-  const std::uint32_t* held = storage_.slots[held_];
-  for (std::uint32_t i = 0; i < changed_count_; ++i) {
-    const std::uint32_t block = storage_.changed_blocks[i];
-    if (is_pool_slot(work[block])) storage_.free_blocks[free_count_++] = work[block];
-    work[block] = held[block];
-  }
-  changed_count_ = 0;
-  update_combined_ = combined_;
-  next_block_ = 0;
+  // The update's changes to the working table are undone in the slices that follow. While the
+  // table is being made level already (after a swap or a refusal), no update has touched it since.
+  chunk_waiting_ = false;
+  have_run_ = false;
+  if (phase_ == Phase::kLevel) return;
   loaded_ = false;
-  inexact_ = false;
+  swapped_ = false;
+  level_next_ = 0;
+  phase_ = Phase::kLevel;
 }
 
-void MapStore::commit(std::uint64_t version, std::uint64_t hash) noexcept {
-  const std::uint32_t* work = storage_.slots[1 - held_];
-  const std::uint32_t* held = storage_.slots[held_];
-  for (std::uint32_t i = 0; i < changed_count_; ++i) {
-    const std::uint32_t block = storage_.changed_blocks[i];
-    if (is_pool_slot(held[block])) storage_.free_blocks[free_count_++] = held[block];
-    if (held[block] == kDegradedSlot) --degraded_blocks_;
-    if (work[block] == kDegradedSlot) ++degraded_blocks_;
-  }
-  held_ = 1 - held_;  // the swap: from here on view() shows the new map
-  std::uint32_t* stale = storage_.slots[1 - held_];
-  for (std::uint32_t i = 0; i < changed_count_; ++i) {
-    const std::uint32_t block = storage_.changed_blocks[i];
-    stale[block] = storage_.slots[held_][block];
-  }
-  for (std::uint32_t i = 0; i < changed_count_; ++i) {
-    storage_.block_hashes[storage_.changed_blocks[i]] = storage_.changed_hashes[i];
-  }
+void MapStore::swap_in(std::uint64_t version, std::uint64_t hash) noexcept {
+  held_ = 1 - held_;  // from here on view() shows the new map
   combined_ = update_combined_;
+  degraded_blocks_ = update_degraded_;
   version_ = version;
   hash_ = hash;
   capture_ns_ = update_capture_ns_;
-  changed_count_ = 0;  // nothing to undo: the working table equals the held one
-  abandon();
+  // The other table (the old map) is made level with the new one in the slices that follow.
+  swapped_ = true;
+  level_next_ = 0;
+  loaded_ = false;
+  phase_ = Phase::kLevel;
 }
 
-bool MapStore::apply_runs(const MapChunkView& chunk) noexcept {
-  RunReader reader(chunk.runs, chunk.runs_size, chunk.first_cell, chunk.end_cell);
-  for (;;) {
-    const Result<CellRun> next = reader.next();
-    if (!next.ok()) return next.error() == Status::kEmpty;  // the end, or a malformed record
-    const CellRun& run = next.value();
-    if (keyframe_ && !run.value) return false;  // a keyframe only sets cells
-    CellIndex cell = run.begin;
-    while (cell < run.end) {
-      const std::uint32_t block = cell / kStoreBlockCells;
-      // Runs come in grid order (check_map_chunk and the update sequence saw to it).
-      if (block < next_block_) return false;
-      const CellIndex block_first = block * kStoreBlockCells;
-      const CellIndex block_end = block_first + kStoreBlockCells < layout_.cell_count
-                                      ? block_first + kStoreBlockCells
-                                      : layout_.cell_count;
-      const CellIndex segment_end = run.end < block_end ? run.end : block_end;
-      const bool whole = cell == block_first && segment_end == block_end;
-      seek(block, whole);
-      if (whole) {
-        for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
-          scratch_[w] = run.value ? valid_bits(block, w) : 0;
-        }
-      } else if (run.value) {
-        cell_bits::set_range(scratch_, cell - block_first, segment_end - block_first);
-      } else {
-        cell_bits::clear_range(scratch_, cell - block_first, segment_end - block_first);
-      }
-      cell = segment_end;
-    }
-  }
-}
-
-void MapStore::seek(std::uint32_t block, bool whole) noexcept {
-  if (loaded_ && block == next_block_) return;
-  if (loaded_) finish_loaded();
-  pass_until(block);
+void MapStore::load_block(std::uint32_t block, bool whole) noexcept {
   loaded_ = true;
   if (whole) return;  // the caller writes every word
   if (keyframe_) {
@@ -185,16 +292,6 @@ void MapStore::finish_loaded() noexcept {
   store(next_block_, scratch_);
   ++next_block_;
   loaded_ = false;
-}
-
-void MapStore::pass_until(std::uint32_t block) noexcept {
-  // The blocks no run touched: a keyframe clears them; a delta keeps them as they are.
-  if (!keyframe_) {
-    if (next_block_ < block) next_block_ = block;
-    return;
-  }
-  const std::uint64_t zeros[kStoreBlockWords] = {};
-  for (; next_block_ < block; ++next_block_) store(next_block_, zeros);
 }
 
 void MapStore::held_words(std::uint32_t block, std::uint64_t* out) noexcept {
@@ -222,6 +319,7 @@ void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
     none = none && words[w] == 0;
     all = all && words[w] == valid_bits(block, w);
   }
+  work_done_ += kWorkPerBlock;
   const std::uint64_t hash = block_hash(block, words);  // of the exact words, whatever is kept
   std::uint32_t* work = storage_.slots[1 - held_];
   const std::uint32_t old = work[block];  // the held map's: each block is stored once per update
@@ -244,6 +342,8 @@ void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
   }
   // A degraded block that stays degraded may hold other (unknown) words: its hash tells.
   if (slot == old && hash == storage_.block_hashes[block]) return;
+  if (old == kDegradedSlot) --update_degraded_;
+  if (slot == kDegradedSlot) ++update_degraded_;
   work[block] = slot;
   storage_.changed_blocks[changed_count_] = block;
   storage_.changed_hashes[changed_count_] = hash;

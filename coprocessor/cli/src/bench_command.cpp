@@ -65,9 +65,9 @@ nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
   const std::filesystem::path maps =
       std::filesystem::temp_directory_path() / ("safecell-demo-maps-" + std::to_string(getpid()));
   write_default_cell_demo_maps(maps.string());
-  const std::string command = std::string("'") + SAFECELL_CONTROLLER_BENCH +
-                              "' --json --benchmark_color=false --maps='" + maps.string() +
-                              "' --benchmark_min_time=" + (quick ? "0.02" : "0.5") + " 2>&1";
+  const std::string command =
+      std::string("'") + SAFECELL_CONTROLLER_BENCH + "' --json --benchmark_color=false --maps='" +
+      maps.string() + "' --benchmark_min_time=" + (quick ? "0.02 --quick" : "0.5") + " 2>&1";
   progress << "running the controller's benchmarks (safecell-controller-bench)...\n" << std::flush;
   std::string output;
   {

@@ -2,7 +2,8 @@
 // One control cycle of the controller core, in this order (each step a watchdog checkpoint):
 //
 //   read joints   RobotPort::read()
-//   poll link     frames in: map updates into the MapStore, clock echoes, stop requests
+//   poll link     frames in: map updates into the MapStore (one bounded slice of the work,
+//                 ControllerLinkConfig::map_work_per_poll), clock echoes, stop requests
 //   look-ahead    with the map's measured age and the measured cycle period
 //   command       stop (a category per cause), or the speed scale / joint velocities
 //   report        the joint state and the held map's version back to the coprocessor
@@ -14,8 +15,12 @@
 // Before a session is up and a keyframe verified the robot is held (waiting, category 2). A
 // look-ahead stop (category 2 by default) is not latched: the robot resumes when the cells ahead
 // are free again.
-// Thread context: run() from the controller's cycle task at its configured rate. Real-time: no
-// allocation, bounded by the link's kMaxFramesPerPoll frames and the look-ahead's box.
+// Between cycles, service_link() uses the idle time for more slices of map work, so a large
+// update is in within a few cycles while each cycle stays short.
+// Thread context: run() and service_link() from the controller's cycle task, run() at its
+// configured rate (one thread: the link's work never runs while a cycle does). Real-time: no
+// allocation; a cycle is bounded by one link slice, the look-ahead's box and the report, and
+// service_link() ends at most one slice after its deadline.
 
 #include <cstdint>
 
@@ -73,6 +78,10 @@ class SafetyCycle {
   // gross-motion service's, or the robot program's), grid.joint_count() of them. With
   // command_velocities the robot gets planned * scale as joint velocities, else the scale alone.
   const CycleReport& run(const double* planned_rad_s, bool command_velocities) noexcept;
+
+  // Between cycles: further link slices while the link has work and the clock is before
+  // until_ns (the next cycle's start less one slice's worst time). Returns the slices run.
+  int service_link(std::uint64_t until_ns) noexcept;
 
   // An operator's acknowledgement: clears the latched faults (link, watchdog, the cycle's own)
   // and restores the robot's power. The next cycle checks everything afresh.

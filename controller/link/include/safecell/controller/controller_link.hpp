@@ -15,7 +15,7 @@
 // coprocessor sends (it converts its own clock with the offset it measures by ClockEcho), so the
 // data-age check needs no clock of the coprocessor's here.
 // Thread context: the controller's cycle task; not synchronised. Real-time: no allocation; poll()
-// handles at most kMaxFramesPerPoll frames.
+// does a bounded amount of work (ControllerLinkConfig::map_work_per_poll).
 
 #include <cstddef>
 #include <cstdint>
@@ -37,11 +37,17 @@ struct ControllerLinkConfig {
   std::uint64_t max_data_age_ns = 150'000'000;  // a frame's capture older than this is refused
   std::uint64_t max_clock_lead_ns = 5'000'000;  // the coprocessor's clock-offset uncertainty
   std::uint64_t latch_window_ns = kDefaultLatchWindowNs;
-  // Frames handled per poll() (at most kMaxFramesPerPoll): bounds the link's share of a control
-  // cycle. The rest wait in the transport's buffer for the next cycle; a large update then takes
-  // a few cycles longer, which its measured age accounts for.
+  // The link's share of a control cycle, in MapStore work units (map_store.hpp; a frame read and
+  // checked costs kWorkPerFrame): an update larger than that is applied over several cycles, and
+  // the frames after it wait in the transport's buffer. Its measured age includes the delay.
+  // The default keeps a slice near 5 us on a host core (safecell-controller-bench).
+  std::uint32_t map_work_per_poll = 128;
+  // Frames handled per poll() at most (1 .. kMaxFramesPerPoll).
   int max_frames_per_poll = 4;
 };
+
+// A frame read, its CRC and its checks, and its message decoded, in MapStore work units.
+inline constexpr std::uint32_t kWorkPerFrame = 32;
 
 // The joints of one control cycle, as the controller read them.
 struct JointSample {
@@ -69,8 +75,12 @@ class ControllerLink {
 
   ControllerLink(const ControllerLinkConfig& config, LinkPort& port, MapStore& store) noexcept;
 
-  // Handles the frames waiting on the port, at most config.max_frames_per_poll of them.
-  void poll(std::uint64_t now_ns) noexcept;
+  // One slice: goes on with the map update in work, then handles the frames waiting on the port,
+  // within config.map_work_per_poll and config.max_frames_per_poll (one frame always gets through
+  // when no chunk is in work, so a budget below kWorkPerFrame still makes progress). Returns
+  // false when the link is idle (the store has no work and the port had no frame left), true when
+  // more may wait.
+  bool poll(std::uint64_t now_ns) noexcept;
 
   // Sends this cycle's joint state; it carries the held map's version as the acknowledgement.
   void send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
@@ -100,6 +110,7 @@ class ControllerLink {
   void handle_message(const FrameView& frame, std::uint64_t now_ns) noexcept;
   void handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
                         std::uint64_t now_ns) noexcept;
+  void map_outcome(const MapOffer& offer, std::uint64_t now_ns) noexcept;
   void detected(const LinkFault& fault, std::uint64_t now_ns) noexcept;
   // Encodes reply_ and sends it sealed by `sealer`.
   void send(FrameSealer& sealer, std::uint64_t capture_ns, std::uint64_t now_ns,
@@ -122,6 +133,8 @@ class ControllerLink {
 
   std::uint64_t map_applied_ns_ = 0;
   std::uint32_t healthy_cameras_ = 0;
+  std::uint32_t update_healthy_cameras_ = 0;  // of the chunk in work in the store
+  std::uint32_t budget_ = 0;                  // this poll's work units left
   MapRefusal last_map_refusal_ = MapRefusal::kNone;
   std::uint64_t updates_applied_ = 0;
   std::uint64_t updates_refused_ = 0;

@@ -16,11 +16,19 @@
 // degraded block has no exact base there and is refused (MapRefusal::kBaseInexact), so the link
 // asks for a keyframe.
 //
+// Work in slices. An update costs O(runs + blocks it changes) for a delta and O(blocks) for a
+// keyframe, more than a control cycle can spare on a fine grid. So the store does it in slices of
+// a bounded amount of work: accept() takes a chunk in O(1), and work(budget) goes on with it until
+// the budget is spent, across as many calls (control cycles) as it needs. The swap itself is O(1);
+// bringing the other slot table level with the new map afterwards (or undoing a refused update)
+// is more work for later slices. The map a reader sees changes only at the swap, so slicing the
+// work delays a map but never tears one; the map's measured age includes the delay.
+//
 // Memory: the caller's (MapStoreStorage), sized by MapStoreLayout from the grid and the pool size;
-// nothing is allocated. Cost per update: O(runs + blocks it changes) for a delta, O(blocks) for a
-// keyframe.
+// nothing is allocated.
 // Thread context: one thread, the controller's cycle (which also polls the link); not
-// synchronised. No allocation, no recursion, bounded loops.
+// synchronised. No allocation, no recursion, bounded loops; reset() is O(blocks) (a new session,
+// while the robot is held anyway).
 
 #include <cstddef>
 #include <cstdint>
@@ -28,6 +36,7 @@
 #include "safecell/controller/map_view.hpp"
 #include "safecell/cspace/map_hash.hpp"
 #include "safecell/cspace/map_update_sequence.hpp"
+#include "safecell/cspace/run_coding.hpp"
 
 namespace safecell {
 
@@ -86,22 +95,51 @@ struct StaticMapStoreMemory {
   }
 };
 
+// The units of MapStore::work()'s budget; each takes roughly the same time on a host core
+// (safecell-controller-bench reports the nanoseconds per unit it measured).
+inline constexpr std::uint32_t kWorkPerRun = 2;    // one run record read and applied
+inline constexpr std::uint32_t kWorkPerBlock = 4;  // one block's words hashed and stored
+inline constexpr std::uint32_t kWorkPerLevel = 1;  // one block of the other table made level
+
 class MapStore {
  public:
+  static constexpr std::uint32_t kUnlimited = 0xFFFFFFFFu;
+
   // Starts with no map (version 0, every cell forbidden). Precondition (checked): every array of
   // `storage` is there and layout.cell_count > 0.
   MapStore(const MapStoreLayout& layout, const MapStoreStorage& storage) noexcept;
   MapStore(const MapStore&) = delete;
   MapStore& operator=(const MapStore&) = delete;
 
-  // One chunk of a keyframe or delta; capture_ns is the capture time of the frame that carried it
-  // (the controller's clock). The held map's capture time is the oldest of its update's chunks.
+  // Takes one chunk of a keyframe or delta; capture_ns is the capture time of the frame that
+  // carried it (the controller's clock). The held map's capture time is the oldest of its
+  // update's chunks. Returns kIgnored or kRefused when the chunk is done with at once, else
+  // kWorking: then `runs` must stay valid until work() gives the chunk's outcome. A chunk still in
+  // work when the next is accepted is first finished without a budget (callers wait instead).
+  MapOffer accept(const MapChunkHeader& header, const std::uint8_t* runs, std::size_t runs_size,
+                  std::uint64_t capture_ns) noexcept;
+  // Goes on with the accepted chunk and the store's upkeep while `budget` lasts (it is lowered by
+  // the units spent; one step may overdraw it by less than kWorkPerBlock). Returns the chunk's
+  // outcome once it has one (kPending: the chunk is in, the update needs more; kApplied: the
+  // update is verified and swapped in; kRefused), else kWorking.
+  MapOffer work(std::uint32_t& budget) noexcept;
+  // accept() and work() without a budget: the chunk's outcome, and the upkeep done.
   MapOffer offer(const MapChunkHeader& header, const std::uint8_t* runs, std::size_t runs_size,
                  std::uint64_t capture_ns) noexcept;
+
+  // A chunk was accepted and has no outcome yet (its runs must stay valid).
+  bool chunk_in_work() const noexcept {
+    return chunk_waiting_ || phase_ == Phase::kRuns || phase_ == Phase::kFinish;
+  }
+  // Work is left: a chunk, or the upkeep after a swap or a refusal.
+  bool busy() const noexcept { return chunk_waiting_ || phase_ != Phase::kIdle; }
+  // The units of work done so far (all calls).
+  std::uint64_t work_done() const noexcept { return work_done_; }
 
   // Forgets the held map (a new session): version 0, every cell forbidden.
   void reset() noexcept;
 
+  // The held map; it changes only in the work() call that returns kApplied.
   MapView view() const noexcept {
     return {storage_.slots[held_], storage_.pool, layout_.cell_count};
   }
@@ -112,18 +150,30 @@ class MapStore {
   const MapStoreLayout& layout() const noexcept { return layout_; }
 
   // The held map's blocks by kind, and how often a mixed block found the pool full (all updates).
+  // (mixed_blocks() counts the old map's blocks too until the upkeep after a swap is done.)
   std::uint32_t mixed_blocks() const noexcept { return layout_.pool_blocks - free_count_; }
   std::uint32_t degraded_blocks() const noexcept { return degraded_blocks_; }
   std::uint64_t pool_overflows() const noexcept { return pool_overflows_; }
 
  private:
+  enum class Phase : std::uint8_t {
+    kIdle,
+    kLevel,   // the working table is made equal to the held one again, block by block
+    kRuns,    // the accepted chunk's runs are applied
+    kFinish,  // the last chunk is in: the blocks after its runs, then the hash and the swap
+  };
+  // One step of each phase; each returns the chunk's outcome when it has one, else kWorking.
+  MapOffer level_step() noexcept;
+  MapOffer runs_step() noexcept;
+  MapOffer finish_step() noexcept;
+  void start_chunk() noexcept;
+  MapOffer chunk_done() noexcept;
   MapOffer drop(const MapChunkHeader& header, MapRefusal refusal) noexcept;
   void begin_stream(MapChunkKind kind, std::uint64_t capture_ns) noexcept;
   void abandon() noexcept;
-  void commit(std::uint64_t version, std::uint64_t hash) noexcept;
-  bool apply_runs(const MapChunkView& chunk) noexcept;
-  void seek(std::uint32_t block, bool whole) noexcept;
-  void pass_until(std::uint32_t block) noexcept;
+  void make_idle() noexcept;
+  void swap_in(std::uint64_t version, std::uint64_t hash) noexcept;
+  void load_block(std::uint32_t block, bool whole) noexcept;
   void finish_loaded() noexcept;
   void held_words(std::uint32_t block, std::uint64_t* out) noexcept;
   std::uint64_t block_hash(std::uint32_t block, const std::uint64_t* words) const noexcept;
@@ -141,11 +191,30 @@ class MapStore {
   std::uint64_t capture_ns_ = 0;
   std::uint64_t combined_ = 0;  // the XOR of the held map's block hashes
 
+  std::uint64_t work_done_ = 0;
+  Phase phase_ = Phase::kIdle;
+
+  // The accepted chunk.
+  bool chunk_waiting_ = false;  // accepted, to start once the working table is level
+  bool chunk_begins_ = false;   // it is the first chunk of an update
+  MapChunkHeader chunk_{};
+  const std::uint8_t* chunk_runs_ = nullptr;
+  std::size_t chunk_runs_size_ = 0;
+  std::uint64_t chunk_capture_ns_ = 0;
+  RunReader reader_{nullptr, 0, 0, 0};
+  bool have_run_ = false;
+  CellRun run_{};  // the run being applied; run_.begin advances block by block
+
+  // Making the working table level: changed_blocks [level_next_ .. changed_count_) are left.
+  std::uint32_t level_next_ = 0;
+  bool swapped_ = false;  // after a swap (the hashes move in), not a refusal
+
   // The update being collected.
   MapUpdateSequence sequence_;
   bool keyframe_ = false;
   bool inexact_ = false;  // it needed the words of a degraded block
   std::uint64_t update_capture_ns_ = 0;
+  std::uint32_t update_degraded_ = 0;  // the working table's degraded blocks
   std::uint32_t changed_count_ = 0;    // changed_blocks / changed_hashes [0 .. changed_count_)
   std::uint64_t update_combined_ = 0;  // combined_ with the changed blocks' hashes swapped in
   std::uint32_t next_block_ = 0;       // blocks below this are final in the working table

@@ -43,8 +43,9 @@ struct MapChunkHeader {
 };
 
 // What became of a chunk offered to a receiver. kRefused once per dropped update (its first
-// offending chunk); kIgnored for the chunks of an update already dropped.
-enum class MapOutcome : std::uint8_t { kPending, kApplied, kRefused, kIgnored };
+// offending chunk); kIgnored for the chunks of an update already dropped; kWorking from a receiver
+// that works in slices (the controller's MapStore): no outcome yet.
+enum class MapOutcome : std::uint8_t { kPending, kApplied, kRefused, kIgnored, kWorking };
 struct MapOffer {
   MapOutcome outcome = MapOutcome::kPending;
   MapRefusal refusal = MapRefusal::kNone;
