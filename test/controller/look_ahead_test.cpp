@@ -128,6 +128,30 @@ TEST(LookAhead, AFreeMapAllowsFullSpeedAndAForbiddenCellHereStops) {
   EXPECT_EQ(result.blocking_cell, grid.cell_containing(motion.position).value());
 }
 
+// Forbidden cells two cells ahead along joint 2 slow the robot that moves joint 2: the result
+// names joint 2 (planned fast) as the joint that decides the speed and as the one of least slack.
+TEST(LookAhead, NamesTheJointThatLimitsTheSpeed) {
+  std::mt19937_64 rng(1);
+  const CspaceGrid grid = make_grid(3, rng, false);
+  MotionState motion;
+  motion.planned_rad_s[1] = 8.0;
+  motion.velocity_rad_s[1] = 0.05;
+  const GridCoords here = grid.coords_containing(motion.position).value();
+  Words map(cell_bits::words_for(grid.cell_count()), 0);
+  for (CellIndex c = 0; c < grid.cell_count(); ++c) {
+    if (grid.coords_of(c).value().along[1] == here.along[1] + 4) cell_bits::set(map.data(), c);
+  }
+  StoreReceiver store(grid.cell_count(), 64);
+  hold(store, map, grid.cell_count());
+  const LookAheadResult result =
+      LookAhead(grid, config_for(grid)).check(store.store().view(), motion, 0.05);
+  ASSERT_EQ(result.reason, LookAheadReason::kFreeDistanceShrinking) << to_string(result.reason);
+  EXPECT_LT(result.speed_scale, 1.0);
+  EXPECT_EQ(result.critical_joint, 1);
+  EXPECT_EQ(result.least_slack_joint, 1);
+  EXPECT_GT(result.slack_s, 0.0);
+}
+
 TEST(LookAhead, RefusesNonsenseInput) {
   std::mt19937_64 rng(2);
   const CspaceGrid grid = make_grid(2, rng, false);

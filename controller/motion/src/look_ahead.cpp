@@ -133,7 +133,8 @@ LookAheadResult LookAhead::check(const MapView& map, const MotionState& motion,
     result.reason = LookAheadReason::kInvalidInput;
     return result;
   }
-  result.critical_joint = critical.value().joint;
+  result.least_slack_joint = critical.value().joint;
+  result.critical_joint = result.least_slack_joint;
   result.slack_s = critical.value().slack_s;
   for (std::uint32_t j = 0; j < joints; ++j) {
     if (box.direction[j] != 0 && result.needed_cells[j] > free_cells[j]) {

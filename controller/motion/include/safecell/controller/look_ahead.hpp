@@ -71,8 +71,12 @@ struct LookAheadResult {
   CellIndex current_cell = 0;
   bool has_blocking_cell = false;
   CellIndex blocking_cell = 0;  // a forbidden cell at the lowest level of the box
+  // The joint that decides the response: the one that limits the speed scale when the robot is
+  // slowed (or stopped for kNoFreeDistance), else the one of least slack.
   std::uint8_t critical_joint = kNoCriticalJoint;
-  double slack_s = 0.0;  // the critical joint's t_c - (reaction + t_d) at the measured speed
+  // The relation at the measured speed: the joint of least slack and its t_c - (reaction + t_d).
+  std::uint8_t least_slack_joint = kNoCriticalJoint;
+  double slack_s = 0.0;
   std::uint32_t free_level = 0;              // L (capped at max_cells)
   std::uint32_t box_cells[kMaxJoints]{};     // n_j checked, 0 for still joints
   std::uint32_t needed_cells[kMaxJoints]{};  // the relation's n_j at the measured speed
