@@ -17,10 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "safecell/controller/controller_link.hpp"
-#include "safecell/controller/host/map_store_memory.hpp"
-#include "safecell/controller/host/simulated_robot.hpp"
-#include "safecell/controller/safety_cycle.hpp"
+#include "cycle_rig.hpp"
 #include "safecell/test/property.hpp"
 #include "scripted_coprocessor.hpp"
 
@@ -81,26 +78,17 @@ Outcome run_scenario(const Scenario& scenario) {
   robot_config.start_rad[0] = -2.8;
   robot_config.start_rad[1] = 0.1;
   robot_config.start_rad[2] = -0.2;
-  SimulatedRobot robot(robot_config);
-  robot.set_time_ns(1'000'000'000);
-  SimulatedClock clock(robot);
-
-  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
-  test::MemoryPort port;
-  ControllerLinkConfig link_config;
-  link_config.grid_fingerprint = grid.fingerprint();
-  link_config.lut_fingerprint = kLuts;
-  ControllerLink link(link_config, port, store.store());
-  Watchdog watchdog({3'000'000, 5'000'000, 2'000'000});
   SafetyCycleConfig cycle_config;
   cycle_config.look_ahead.control_cycle_s = 0.004;
   cycle_config.look_ahead.actuation_s = robot_config.actuation_s;
   cycle_config.look_ahead.sensor_period_s =
       scenario.whole_relation ? static_cast<double>(kCaptureNs) * 1e-9 : 0.0;
-  cycle_config.look_ahead.stop = SimulatedRobot::measure_stop_model(robot_config);
   cycle_config.look_ahead.human_speed_m_s = scenario.whole_relation ? kHumanWalkingSpeed_m_s : 0.0;
   cycle_config.look_ahead.max_cells = 40;
-  SafetyCycle cycle(grid, cycle_config, robot, clock, link, store.store(), watchdog);
+  test::MemoryPort port;
+  test::CycleRig rig(grid, robot_config, cycle_config, port, kLuts);
+  SimulatedRobot& robot = rig.robot;
+  SafetyCycle& cycle = rig.cycle;
   // The robot's own program: joint 0 at full speed towards its upper limit. Only the look-ahead
   // stands between it and the region (a planner would route round or give up on its own).
   double planned[kMaxJoints] = {};
@@ -184,6 +172,7 @@ Outcome run_scenario(const Scenario& scenario) {
       in_flight.pop_front();
     }
     const CycleReport& report = cycle.run(planned, true);
+    (void)cycle.service_link(now + 3'000'000);  // the idle time, as the controller module does
     if (report.state == CycleState::kFault) {
       outcome.detail = std::string("fault: ") + to_string(report.fault);
       return outcome;

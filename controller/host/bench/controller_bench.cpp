@@ -39,14 +39,13 @@
 #include "safecell/controller/grid_planner.hpp"
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/controller/host/planner_memory.hpp"
+#include "safecell/controller/host/scripted_coprocessor.hpp"
 #include "safecell/controller/host/simulated_robot.hpp"
 #include "safecell/controller/safety_cycle.hpp"
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/cspace/map_chunk.hpp"
 #include "safecell/cspace/map_hash.hpp"
-#include "safecell/protocol/frame_checker.hpp"
-#include "safecell/protocol/nanopb_codec.hpp"
 
 namespace safecell {
 namespace {
@@ -121,76 +120,6 @@ MapSequence& maps() {
   return sequence;
 }
 
-// The frames of one update, sealed as the coprocessor sends them.
-class FrameSource {
- public:
-  explicit FrameSource(std::uint64_t grid_fingerprint)
-      : grid_(grid_fingerprint),
-        sealer_({1, 2, kSession, configuration_fingerprint(grid_fingerprint, kLuts)}) {}
-
-  std::vector<std::uint8_t> handshake(std::uint64_t now) {
-    message_ = safecell_v1_Message_init_zero;
-    message_.which_body = safecell_v1_Message_handshake_tag;
-    message_.body.handshake.protocol_version = kProtocolVersion;
-    message_.body.handshake.session_id = kSession;
-    message_.body.handshake.grid_fingerprint = grid_;
-    message_.body.handshake.lut_fingerprint = kLuts;
-    return seal(now, 0, kFrameFlagHandshake);
-  }
-
-  std::vector<std::vector<std::uint8_t>> update(const Words* base, std::uint64_t base_version,
-                                                const Words& target, std::uint64_t version,
-                                                CellIndex cells, std::uint64_t capture,
-                                                std::uint64_t now) {
-    std::vector<std::vector<std::uint8_t>> frames;
-    std::vector<safecell_v1_MapChunk> chunks;
-    CellIndex from = 0;
-    do {
-      safecell_v1_MapChunk chunk = safecell_v1_MapChunk_init_zero;
-      chunk.kind = base ? safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
-                        : safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
-      chunk.map_version = version;
-      chunk.base_version = base ? base_version : 0;
-      chunk.map_hash = map_hash(target.data(), cells);
-      chunk.chunk_index = static_cast<std::uint32_t>(chunks.size());
-      chunk.first_cell = from;
-      chunk.healthy_cameras = 4;
-      chunk.camera_count = 4;
-      std::size_t size = 0;
-      chunk.end_cell = base ? encode_delta_chunk(base->data(), target.data(), cells, from,
-                                                 chunk.runs.bytes, kRunBytes, size)
-                            : encode_keyframe_chunk(target.data(), cells, from, chunk.runs.bytes,
-                                                    kRunBytes, size);
-      chunk.runs.size = static_cast<pb_size_t>(size);
-      from = chunk.end_cell;
-      chunks.push_back(chunk);
-    } while (from < cells);
-    for (auto& chunk : chunks) {
-      chunk.chunk_count = static_cast<std::uint32_t>(chunks.size());
-      message_ = safecell_v1_Message_init_zero;
-      message_.which_body = safecell_v1_Message_map_chunk_tag;
-      message_.body.map_chunk = chunk;
-      frames.push_back(seal(now, capture));
-    }
-    return frames;
-  }
-
- private:
-  std::vector<std::uint8_t> seal(std::uint64_t now, std::uint64_t capture, std::uint8_t flags = 0) {
-    std::uint8_t payload[kMaxPayloadBytes];
-    const Result<std::size_t> encoded = encode_message(message_, payload, sizeof payload);
-    std::vector<std::uint8_t> frame(kMaxFrameBytes);
-    const Result<std::size_t> size =
-        sealer_.seal(payload, encoded.value(), now, capture, frame.data(), frame.size(), flags);
-    frame.resize(size.value());
-    return frame;
-  }
-
-  std::uint64_t grid_;
-  FrameSealer sealer_;
-  safecell_v1_Message message_{};
-};
-
 class QueuePort final : public LinkPort {
  public:
   bool send(const std::uint8_t*, std::size_t) noexcept override { return true; }
@@ -260,7 +189,7 @@ void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced
   config.look_ahead.stop = SimulatedRobot::measure_stop_model(robot_config);
   config.min_healthy_cameras = 1;
   SafetyCycle cycle(grid, config, robot, clock, link, store.store(), watchdog);
-  FrameSource source(grid.fingerprint());
+  ScriptedCoprocessor source(grid.fingerprint(), kLuts, kSession, cells);
   // The session and the first map, untimed.
   port.load({source.handshake(clock.now)});
   double planned[kMaxJoints] = {};
@@ -268,7 +197,7 @@ void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced
   (void)cycle.run(planned, true);
   std::uint64_t version = 1;
   clock.now += 4'000'000;
-  port.load(source.update(nullptr, 0, sequence.maps.front(), version, cells, clock.now - 50'000'000,
+  port.load(source.update(nullptr, 0, sequence.maps.front().data(), version, clock.now - 50'000'000,
                           clock.now));
   for (int c = 0; c < 10000 && store.store().version() != version; ++c) {
     (void)cycle.run(planned, true);
@@ -300,8 +229,9 @@ void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced
         !store.store().chunk_in_work()) {
       sent_index = (sent_index + 1) % sequence.maps.size();
       ++sent_version;
-      auto update = source.update(&sequence.maps[held_index], version, sequence.maps[sent_index],
-                                  sent_version, cells, clock.now - 50'000'000, clock.now);
+      auto update =
+          source.update(sequence.maps[held_index].data(), version, sequence.maps[sent_index].data(),
+                        sent_version, clock.now - 50'000'000, clock.now);
       frames += update.size();
       ++updates_sent;
       port.load(std::move(update));

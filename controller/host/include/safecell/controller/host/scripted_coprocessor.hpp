@@ -1,0 +1,48 @@
+#pragma once
+// The coprocessor's sending side, made of the controller's own codec (nanopb, the safety layer,
+// the map run coding): sealed frames for tests and benchmarks of the controller that run without
+// the coprocessor's code (under qemu-aarch64 too). Hosted; throws std::logic_error when a message
+// does not fit a frame (a caller's mistake).
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/protocol/frame_checker.hpp"
+#include "safecell/v1/message.nanopb.h"
+
+namespace safecell {
+
+class ScriptedCoprocessor {
+ public:
+  using Frame = std::vector<std::uint8_t>;
+
+  ScriptedCoprocessor(std::uint64_t grid_fingerprint, std::uint64_t lut_fingerprint,
+                      std::uint64_t session, CellIndex cells);
+
+  // The session's opening handshake, sent at `now_ns`.
+  Frame handshake(std::uint64_t now_ns);
+  // Every chunk of one map update, sealed at `now_ns` with the capture time `capture_ns`: a delta
+  // from `base` (whose version is base_version), or a keyframe when base is null. Each chunk
+  // carries at most run_bytes of runs (the protocol's most by default). wrong_hash: the hash of
+  // another map, a sender fault the receiver must catch.
+  std::vector<Frame> update(const std::uint64_t* base, std::uint64_t base_version,
+                            const std::uint64_t* target, std::uint64_t version,
+                            std::uint64_t capture_ns, std::uint64_t now_ns, bool wrong_hash = false,
+                            std::size_t run_bytes = kMaxRunBytes);
+
+  static constexpr std::size_t kMaxRunBytes = sizeof(safecell_v1_MapChunk{}.runs.bytes);
+
+ private:
+  Frame seal(std::uint64_t now_ns, std::uint64_t capture_ns, std::uint8_t flags = 0);
+
+  std::uint64_t grid_;
+  std::uint64_t lut_;
+  std::uint64_t session_;
+  CellIndex cells_;
+  FrameSealer sealer_;
+  safecell_v1_Message message_{};
+};
+
+}  // namespace safecell
