@@ -120,7 +120,7 @@ TEST_F(ControllerLinkTest, AnUpdateLargerThanAPollsShareIsAppliedOverSeveralPoll
       const std::uint64_t done = store_.store().work_done();
       link.poll(now += kMs / 4);
       ++polls;
-      EXPECT_LT(store_.store().work_done() - done, 8u + kWorkPerBlock);
+      EXPECT_LT(store_.store().work_done() - done, 8u + kWorkPerRun + kWorkPerBlock);
     }
   };
   port_.inbox.push_back(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs));

@@ -82,8 +82,8 @@ TEST(MapStore, LayoutIsSizedFromTheGridAndPool) {
 
 // Offers `chunk` as the controller's link does: accept(), then work() in slices of small random
 // budgets until the chunk has an outcome, and sometimes the upkeep after it too. Each slice stays
-// within its budget (one step may overdraw it by less than kWorkPerBlock), and the held map stays
-// `before` until the slice that returns kApplied.
+// within its budget (the last step may overdraw it by less than kWorkPerRun + kWorkPerBlock), and
+// the held map stays `before` until the slice that returns kApplied.
 MapOffer offer_in_slices(StoreReceiver& receiver, MapStore& store, const SentChunk& chunk,
                          std::mt19937_64& rng, const Words& before) {
   const std::uint64_t held_version = store.version();
@@ -94,7 +94,7 @@ MapOffer offer_in_slices(StoreReceiver& receiver, MapStore& store, const SentChu
     std::uint32_t left = budget;
     const std::uint64_t done = store.work_done();
     const MapOffer slice = store.work(left);
-    EXPECT_LT(store.work_done() - done, std::uint64_t{budget} + kWorkPerBlock);
+    EXPECT_LT(store.work_done() - done, std::uint64_t{budget} + kWorkPerRun + kWorkPerBlock);
     if (offer.outcome == MapOutcome::kWorking) offer = slice;
     if (offer.outcome == MapOutcome::kWorking) {
       EXPECT_EQ(store.version(), held_version);

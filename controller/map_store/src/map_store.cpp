@@ -151,58 +151,59 @@ void MapStore::make_idle() noexcept {
 }
 
 MapOffer MapStore::runs_step() noexcept {
-  if (!have_run_) {
-    work_done_ += kWorkPerRun;
-    const Result<CellRun> next = reader_.next();
-    if (!next.ok()) {
-      // The end, or a malformed record.
-      if (next.error() != Status::kEmpty) return drop(chunk_, MapRefusal::kBadChunk);
-      return chunk_done();
+  // One costed action (a run read, or a block stored) and the free ones around it: the segments
+  // of a run within the block in scratch_.
+  for (;;) {
+    if (!have_run_) {
+      work_done_ += kWorkPerRun;
+      const Result<CellRun> next = reader_.next();
+      if (!next.ok()) {
+        // The end, or a malformed record.
+        if (next.error() != Status::kEmpty) return drop(chunk_, MapRefusal::kBadChunk);
+        return chunk_done();
+      }
+      run_ = next.value();
+      if (keyframe_ && !run_.value) return drop(chunk_, MapRefusal::kBadChunk);  // only sets
+      have_run_ = true;
     }
-    run_ = next.value();
-    if (keyframe_ && !run_.value) return drop(chunk_, MapRefusal::kBadChunk);  // only sets cells
-    have_run_ = true;
-    return {MapOutcome::kWorking, MapRefusal::kNone};
-  }
-  if (run_.begin >= run_.end) {
-    have_run_ = false;
-    return {MapOutcome::kWorking, MapRefusal::kNone};
-  }
-  const std::uint32_t block = run_.begin / kStoreBlockCells;
-  // Runs come in grid order (check_map_chunk and the update sequence saw to it).
-  if (block < next_block_) return drop(chunk_, MapRefusal::kBadChunk);
-  if (loaded_ && block != next_block_) {
-    finish_loaded();
-    return {MapOutcome::kWorking, MapRefusal::kNone};
-  }
-  if (!loaded_ && next_block_ < block) {
-    // The blocks no run touched: a keyframe clears them; a delta keeps them as they are.
-    if (!keyframe_) {
-      next_block_ = block;
-    } else {
-      const std::uint64_t zeros[kStoreBlockWords] = {};
-      store(next_block_++, zeros);
+    if (run_.begin >= run_.end) {
+      have_run_ = false;
       return {MapOutcome::kWorking, MapRefusal::kNone};
     }
-  }
-  const CellIndex block_first = block * kStoreBlockCells;
-  const CellIndex block_end = block_first + kStoreBlockCells < layout_.cell_count
-                                  ? block_first + kStoreBlockCells
-                                  : layout_.cell_count;
-  const CellIndex segment_end = run_.end < block_end ? run_.end : block_end;
-  const bool whole = run_.begin == block_first && segment_end == block_end;
-  if (!loaded_) load_block(block, whole);
-  if (whole) {
-    for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
-      scratch_[w] = run_.value ? valid_bits(block, w) : 0;
+    const std::uint32_t block = run_.begin / kStoreBlockCells;
+    // Runs come in grid order (check_map_chunk and the update sequence saw to it).
+    if (block < next_block_) return drop(chunk_, MapRefusal::kBadChunk);
+    if (loaded_ && block != next_block_) {
+      finish_loaded();
+      return {MapOutcome::kWorking, MapRefusal::kNone};
     }
-  } else if (run_.value) {
-    cell_bits::set_range(scratch_, run_.begin - block_first, segment_end - block_first);
-  } else {
-    cell_bits::clear_range(scratch_, run_.begin - block_first, segment_end - block_first);
+    if (!loaded_ && next_block_ < block) {
+      // The blocks no run touched: a keyframe clears them; a delta keeps them as they are.
+      if (keyframe_) {
+        const std::uint64_t zeros[kStoreBlockWords] = {};
+        store(next_block_++, zeros);
+        return {MapOutcome::kWorking, MapRefusal::kNone};
+      }
+      next_block_ = block;
+    }
+    const CellIndex block_first = block * kStoreBlockCells;
+    const CellIndex block_end = block_first + kStoreBlockCells < layout_.cell_count
+                                    ? block_first + kStoreBlockCells
+                                    : layout_.cell_count;
+    const CellIndex segment_end = run_.end < block_end ? run_.end : block_end;
+    const bool whole = run_.begin == block_first && segment_end == block_end;
+    if (!loaded_) load_block(block, whole);
+    if (whole) {
+      for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+        scratch_[w] = run_.value ? valid_bits(block, w) : 0;
+      }
+    } else if (run_.value) {
+      cell_bits::set_range(scratch_, run_.begin - block_first, segment_end - block_first);
+    } else {
+      cell_bits::clear_range(scratch_, run_.begin - block_first, segment_end - block_first);
+    }
+    run_.begin = segment_end;
   }
-  run_.begin = segment_end;
-  return {MapOutcome::kWorking, MapRefusal::kNone};
 }
 
 MapOffer MapStore::chunk_done() noexcept {
