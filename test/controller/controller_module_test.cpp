@@ -41,6 +41,7 @@ TEST(ControllerConfig, TheExampleLoads) {
   EXPECT_EQ(config.task.goals_rad.size(), 2u);
   EXPECT_EQ(config.link.listen.port, 47701);
   EXPECT_EQ(config.safety.fault_stop, StopCategory::kCategory1);
+  EXPECT_EQ(config.link.map_work_per_slice, 128u);
 }
 
 TEST(ControllerConfig, RefusalsNameTheFieldLineAndValue) {
@@ -62,6 +63,9 @@ TEST(ControllerConfig, RefusalsNameTheFieldLineAndValue) {
   EXPECT_NE(refusal(replaced(text, "- [1.0, 0.3, -0.4", "- [9.0, 0.3, -0.4")).find("range"),
             std::string::npos);
   EXPECT_NE(refusal(replaced(text, "m_max_m: 0.18 ", "m_max_m: 0 ")).find("grid.m_max_m"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced(text, "map_work_per_slice: 128 ", "map_work_per_slice: 0 "))
+                .find("link.map_work_per_slice"),
             std::string::npos);
   EXPECT_NE(refusal("grid: [").find("not valid YAML"), std::string::npos);
   EXPECT_NE(refusal("- 1").find("a YAML map"), std::string::npos);

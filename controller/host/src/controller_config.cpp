@@ -241,6 +241,8 @@ void read_rest(const Reader& reader, const YAML::Node& root, ControllerConfig& c
       link, "coprocessor_id", "link.coprocessor_id", l.coprocessor_id, 0xFFFFFFFFu));
   l.lut_fingerprint =
       reader.unsigned_number(link, "lut_fingerprint", "link.lut_fingerprint", 0, ~std::uint64_t{0});
+  l.map_work_per_slice = static_cast<std::uint32_t>(reader.number(
+      link, "map_work_per_slice", "link.map_work_per_slice", l.map_work_per_slice, 1.0, 1e6));
 
   const YAML::Node task = reader.map(root, "task", "task", false);
   if (task.IsDefined()) {

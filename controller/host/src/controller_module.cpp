@@ -78,6 +78,7 @@ struct ControllerModule::Parts {
     out.coprocessor_id = config.link.coprocessor_id;
     out.grid_fingerprint = grid.fingerprint();
     out.lut_fingerprint = config.link.lut_fingerprint;
+    out.map_work_per_poll = config.link.map_work_per_slice;
     out.watchdog_ns = static_cast<std::uint64_t>(config.timing.watchdog_ms * 1e6);
     out.max_data_age_ns = static_cast<std::uint64_t>(config.timing.max_data_age_ms * 1e6);
     out.max_clock_lead_ns = static_cast<std::uint64_t>(config.timing.max_clock_lead_ms * 1e6);

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "safecell/controller/controller_link.hpp"
 #include "safecell/controller/host/simulated_robot.hpp"
 #include "safecell/controller/host/udp_link_port.hpp"
 #include "safecell/controller/robot_port.hpp"
@@ -51,6 +52,9 @@ struct ControllerLinkSettings {
   std::uint32_t controller_id = 2;
   std::uint32_t coprocessor_id = 1;
   std::uint64_t lut_fingerprint = 0;
+  // MapStore work units per link slice (ControllerLinkConfig::map_work_per_poll): a cycle does
+  // one slice, the idle time between cycles more.
+  std::uint32_t map_work_per_slice = ControllerLinkConfig{}.map_work_per_poll;
 };
 
 struct ControllerTask {
