@@ -1,5 +1,22 @@
 # Helpers that give every module the same shape.
 
+include(GNUInstallDirs)
+
+# safecell_install(<target> [<include-dir>])
+# Installs a library of the controller's side (shared/, protocol/, the controller core) into the
+# export set `safecell` (find_package(safecell) gives safecell::<name>, the target's name without
+# its safecell_ prefix), with the headers of <include-dir>.
+function(safecell_install target)
+  string(REGEX REPLACE "^safecell_" "" export_name ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
+  install(TARGETS ${target} EXPORT safecellTargets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  if(ARGC GREATER 1)
+    install(DIRECTORY ${ARGV1}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  endif()
+endfunction()
+
 # safecell_check_headers_alone(<target> <include-dir> [extra flag targets...])
 # Compiles every public header of <target> in a translation unit of its own (twice, to test the
 # include guard), so a header that leans on an include it does not make fails the build.
@@ -25,12 +42,15 @@ function(safecell_add_freestanding_library name)
   add_library(safecell_${name} STATIC ${ARG_SOURCES})
   add_library(safecell::${name} ALIAS safecell_${name})
   target_include_directories(safecell_${name} PUBLIC
-    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>)
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   # The flags stay PRIVATE: hosted users (the coprocessor, the tests) include these headers
-  # with their own flags, and the header check below compiles them freestanding.
+  # with their own flags, and the header check below compiles them freestanding. They are the
+  # build's own and stay out of the installed targets.
   target_link_libraries(safecell_${name}
     PUBLIC ${ARG_DEPENDS}
-    PRIVATE safecell::freestanding safecell::warnings)
+    PRIVATE $<BUILD_INTERFACE:safecell::freestanding> $<BUILD_INTERFACE:safecell::warnings>)
+  safecell_install(safecell_${name} ${CMAKE_CURRENT_SOURCE_DIR}/include)
   safecell_check_headers_alone(safecell_${name} ${CMAKE_CURRENT_SOURCE_DIR}/include safecell::freestanding)
   set_property(GLOBAL APPEND PROPERTY SAFECELL_FREESTANDING_LIBRARIES safecell_${name})
 endfunction()

@@ -36,7 +36,13 @@ add_library(safecell_nanopb_runtime STATIC
   ${SAFECELL_NANOPB_SOURCE_DIR}/pb_encode.c
   ${SAFECELL_NANOPB_SOURCE_DIR}/pb_decode.c)
 add_library(safecell::nanopb_runtime ALIAS safecell_nanopb_runtime)
-target_include_directories(safecell_nanopb_runtime SYSTEM PUBLIC ${SAFECELL_NANOPB_SOURCE_DIR})
+target_include_directories(safecell_nanopb_runtime SYSTEM PUBLIC
+  $<BUILD_INTERFACE:${SAFECELL_NANOPB_SOURCE_DIR}>
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/safecell/nanopb>)
+safecell_install(safecell_nanopb_runtime)
+install(FILES ${SAFECELL_NANOPB_SOURCE_DIR}/pb.h ${SAFECELL_NANOPB_SOURCE_DIR}/pb_common.h
+              ${SAFECELL_NANOPB_SOURCE_DIR}/pb_encode.h ${SAFECELL_NANOPB_SOURCE_DIR}/pb_decode.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/safecell/nanopb)
 if(SAFECELL_BARE_METAL)
   # The call graph too: the controller image's stack report walks through the decoder.
   target_compile_options(safecell_nanopb_runtime PRIVATE -ffreestanding -fcallgraph-info=su
@@ -66,8 +72,11 @@ function(safecell_nanopb_generate target)
     list(APPEND sources ${out_dir}/${stem}.nanopb.c)
   endforeach()
   add_library(${target} STATIC ${sources})
-  target_include_directories(${target} SYSTEM PUBLIC $<BUILD_INTERFACE:${out_dir}>)
+  target_include_directories(${target} SYSTEM PUBLIC $<BUILD_INTERFACE:${out_dir}>
+                             $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_link_libraries(${target} PUBLIC safecell::nanopb_runtime)
+  safecell_install(${target})
+  install(DIRECTORY ${out_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
   if(SAFECELL_BARE_METAL)
     target_compile_options(${target} PRIVATE -ffreestanding -fcallgraph-info=su
                            -ffunction-sections -fdata-sections)
