@@ -119,9 +119,9 @@ class MapStore {
   MapOffer accept(const MapChunkHeader& header, const std::uint8_t* runs, std::size_t runs_size,
                   std::uint64_t capture_ns) noexcept;
   // Goes on with the accepted chunk and the store's upkeep while `budget` lasts (it is lowered by
-  // the units spent; the last step may overdraw it by less than kWorkPerRun + kWorkPerBlock). Returns the chunk's
-  // outcome once it has one (kPending: the chunk is in, the update needs more; kApplied: the
-  // update is verified and swapped in; kRefused), else kWorking.
+  // the units spent; the last step may overdraw it by less than kWorkPerRun + kWorkPerBlock).
+  // Returns the chunk's outcome once it has one (kPending: the chunk is in, the update needs more;
+  // kApplied: the update is verified and swapped in; kRefused), else kWorking.
   MapOffer work(std::uint32_t& budget) noexcept;
   // accept() and work() without a budget: the chunk's outcome, and the upkeep done.
   MapOffer offer(const MapChunkHeader& header, const std::uint8_t* runs, std::size_t runs_size,
