@@ -5,7 +5,8 @@
 // holds forbidden for the same version.
 //
 // Input: a sequence of chunks, each  [kind 1][version 1][base 1][index 1][count 1][first 2]
-// [end 2][hash selector 1][run bytes n 1][n bytes]; the grid has 3000 cells.
+// [end 2][hash selector 1, its upper 7 bits the store's slice budget (0: whole)][run bytes n 1]
+// [n bytes]; the grid has 3000 cells.
 
 #include <cstring>
 
@@ -71,7 +72,20 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
     store.view().copy_dense(store_before);
     const std::uint64_t store_version_before = store.version();
     const MapAssembler::Offer offer = assembler.offer(header, data + at, runs_size);
-    const MapOffer store_offer = store.offer(header, data + at, runs_size, 1);
+    // The store takes the chunk whole, or (hash selector's upper bits) in slices of that many
+    // work units, leaving the upkeep after a swap or refusal to the next chunk, as the link does.
+    const std::uint32_t slice = field[9] >> 1U;
+    MapOffer store_offer;
+    if (slice == 0) {
+      store_offer = store.offer(header, data + at, runs_size, 1);
+    } else {
+      store_offer = store.accept(header, data + at, runs_size, 1);
+      while (store_offer.outcome == MapOutcome::kWorking) {
+        SAFECELL_ASSERT(store.version() == store_version_before);  // no half update shows
+        std::uint32_t budget = slice;
+        store_offer = store.work(budget);
+      }
+    }
     at += runs_size;
     if (offer.outcome == MapAssembler::Outcome::kApplied) {
       SAFECELL_ASSERT(assembler.version() == header.map_version);
