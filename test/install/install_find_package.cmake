@@ -1,4 +1,5 @@
-# cmake -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DGENERATOR=... -P install_find_package.cmake
+# cmake -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DGENERATOR=... -DCXX_COMPILER=...
+#       -DC_COMPILER=... -DCXX_FLAGS=... -DLINKER_FLAGS=... -P install_find_package.cmake
 # Installs the build into WORK_DIR/prefix, then configures, builds and runs the consumer project
 # against it. Fails on the first step that fails, with its output.
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -17,6 +18,7 @@ if(NOT EXISTS ${WORK_DIR}/prefix/lib/cmake/safecell/safecellConfig.cmake)
 endif()
 run("configure the consumer" ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}/build
     -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_C_COMPILER=${C_COMPILER}
+    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}"
     -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
 run("build the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run("run the consumer" ${WORK_DIR}/build/consumer)
