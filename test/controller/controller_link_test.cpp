@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <deque>
 #include <vector>
 
@@ -138,6 +139,39 @@ TEST_F(ControllerLinkTest, AnUpdateLargerThanAPollsShareIsAppliedOverSeveralPoll
   EXPECT_GT(polls, 20);
   EXPECT_EQ(link.updates_refused(), 0u);
   EXPECT_EQ(link.latch().total(), 0u);  // no frame was late or refused
+}
+
+// A chunk whose kind is a number this version does not name, behind a valid CRC: refused as
+// corruption (not taken as a keyframe), the held map kept.
+TEST_F(ControllerLinkTest, AChunkOfAnUnknownKindIsRefusedAsCorruption) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  const auto first = map_with(100, 900);
+  deliver(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  ASSERT_EQ(store_.store().version(), 1u);
+  safecell_v1_Message message = safecell_v1_Message_init_zero;
+  message.which_body = safecell_v1_Message_map_chunk_tag;
+  safecell_v1_MapChunk& chunk = message.body.map_chunk;
+  chunk.kind = safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA;
+  chunk.map_version = 2;
+  chunk.base_version = 1;
+  chunk.map_hash = map_hash(first.data(), kCells);
+  chunk.chunk_count = 1;
+  chunk.end_cell = kCells;
+  Bytes payload(kMaxPayloadBytes);
+  const Result<std::size_t> size = encode_message(message, payload.data(), payload.size());
+  ASSERT_TRUE(size.ok());
+  payload.resize(size.value());
+  // The chunk's first field is its kind (field 1, varint): 0x08 0x02 becomes 0x08 0x12 (18).
+  const std::uint8_t kind_delta[] = {0x08, 0x02};
+  const auto at =
+      std::search(payload.begin(), payload.end(), std::begin(kind_delta), std::end(kind_delta));
+  ASSERT_NE(at, payload.end());
+  *(at + 1) = 0x12;
+  const std::uint64_t errors = link_.latch().count(LinkError::kCorruption);
+  deliver(coprocessor_.seal_payload(payload, 29 * kMs, 30 * kMs), 31 * kMs);
+  EXPECT_EQ(link_.latch().count(LinkError::kCorruption), errors + 1);
+  EXPECT_EQ(store_.store().version(), 1u);
+  EXPECT_EQ(held(), first);
 }
 
 TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {

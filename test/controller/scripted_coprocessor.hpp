@@ -56,6 +56,9 @@ class ScriptedCoprocessor {
     EXPECT_EQ(frames.size(), 1U) << "the test's grid is too large for an update in one frame";
     return frames.front();
   }
+  Bytes seal_payload(const Bytes& payload, std::uint64_t capture, std::uint64_t now) {
+    return sender_.seal_payload(payload.data(), payload.size(), now, capture);
+  }
 
  private:
   safecell::ScriptedCoprocessor sender_;

@@ -56,7 +56,7 @@ class NaiveReceiver {
       return;
     }
     const safecell_v1_MapChunk& chunk = message_.body.map_chunk;
-    const MapChunkView view{chunk.kind == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
+    const MapChunkView view{wire_enum(chunk.kind) == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
                                 ? MapChunkKind::kDelta
                                 : MapChunkKind::kKeyframe,
                             chunk.first_cell, chunk.end_cell, chunk.runs.bytes, chunk.runs.size};

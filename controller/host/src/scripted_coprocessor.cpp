@@ -70,6 +70,17 @@ std::vector<ScriptedCoprocessor::Frame> ScriptedCoprocessor::update(
   return frames;
 }
 
+ScriptedCoprocessor::Frame ScriptedCoprocessor::seal_payload(const std::uint8_t* payload,
+                                                             std::size_t size, std::uint64_t now_ns,
+                                                             std::uint64_t capture_ns) {
+  Frame frame(kMaxFrameBytes);
+  const Result<std::size_t> sealed =
+      sealer_.seal(payload, size, now_ns, capture_ns, frame.data(), frame.size());
+  if (!sealed.ok()) throw std::logic_error("ScriptedCoprocessor: the payload does not seal");
+  frame.resize(sealed.value());
+  return frame;
+}
+
 ScriptedCoprocessor::Frame ScriptedCoprocessor::seal(std::uint64_t now_ns, std::uint64_t capture_ns,
                                                      std::uint8_t flags) {
   std::uint8_t payload[kMaxPayloadBytes];

@@ -5,9 +5,10 @@
 namespace safecell {
 namespace {
 
+// Precondition: the chunk's kind is a keyframe or a delta (known_kind()).
 MapChunkHeader chunk_header_of(const safecell_v1_MapChunk& chunk) noexcept {
   MapChunkHeader header;
-  header.kind = chunk.kind == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
+  header.kind = wire_enum(chunk.kind) == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA
                     ? MapChunkKind::kDelta
                     : MapChunkKind::kKeyframe;
   header.map_version = chunk.map_version;
@@ -18,6 +19,12 @@ MapChunkHeader chunk_header_of(const safecell_v1_MapChunk& chunk) noexcept {
   header.first_cell = chunk.first_cell;
   header.end_cell = chunk.end_cell;
   return header;
+}
+
+bool known_kind(const safecell_v1_MapChunk& chunk) noexcept {
+  const auto kind = wire_enum(chunk.kind);
+  return kind == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME ||
+         kind == safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_DELTA;
 }
 
 }  // namespace
@@ -176,6 +183,12 @@ void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns
         detected({LinkError::kDelay, 0}, now_ns);  // a map whose age cannot be checked
         break;
       }
+      if (!known_kind(incoming_.body.map_chunk)) {
+        // Neither a keyframe nor a delta (a sender of another version, or a fault behind a
+        // valid CRC): refused like corruption, never guessed.
+        detected({LinkError::kCorruption, frame.header.sequence}, now_ns);
+        break;
+      }
       handle_map_chunk(incoming_.body.map_chunk, frame, now_ns);
       break;
     case safecell_v1_Message_clock_echo_tag: {
@@ -189,10 +202,16 @@ void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns
       send(sealer_, now_ns, now_ns);
       break;
     }
-    case safecell_v1_Message_stop_request_tag:
+    case safecell_v1_Message_stop_request_tag: {
+      // The stop holds whatever the cause; a cause this version does not name is kept as
+      // unspecified (the number itself is not a value of the enum).
       stop_requested_ = true;
-      stop_cause_ = incoming_.body.stop_request.cause;
+      const auto cause = wire_enum(incoming_.body.stop_request.cause);
+      stop_cause_ = cause >= _safecell_v1_FaultCause_MIN && cause <= _safecell_v1_FaultCause_MAX
+                        ? static_cast<safecell_v1_FaultCause>(cause)
+                        : safecell_v1_FaultCause_FAULT_CAUSE_UNSPECIFIED;
       break;
+    }
     case safecell_v1_Message_status_report_tag:
       healthy_cameras_ = incoming_.body.status_report.healthy_cameras;
       break;

@@ -5,8 +5,10 @@
 // an oversize field or count among them, is a refusal, never a truncated message.
 // Real-time safe: no allocation (nanopb without PB_ENABLE_MALLOC), bounded by the payload size.
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #include "safecell/base/result.hpp"
 #include "safecell/protocol/frame.hpp"
@@ -21,6 +23,14 @@ static_assert(
 // kInvalidArgument for a payload that is not a valid Message within the bounds.
 Status decode_message(const std::uint8_t* payload, std::size_t size,
                       safecell_v1_Message& message) noexcept;
+
+// The number an enum field of a decoded message holds. nanopb stores whatever number came on the
+// wire, also one the enum does not name; loading that as the enum type is undefined behaviour, so
+// the field's bytes are read as its integer and compared against the enum's values.
+template <typename Enum>
+constexpr std::underlying_type_t<Enum> wire_enum(const Enum& field) noexcept {
+  return std::bit_cast<std::underlying_type_t<Enum>>(field);
+}
 
 // kCapacityExceeded when the encoding does not fit out[0..capacity); kInvalidArgument when the
 // message breaks its own bounds (a count above max_count). Returns the bytes written.

@@ -32,6 +32,11 @@ class ScriptedCoprocessor {
                             std::uint64_t capture_ns, std::uint64_t now_ns, bool wrong_hash = false,
                             std::size_t run_bytes = kMaxRunBytes);
 
+  // A payload of the caller's own making (a hostile or future sender's message), sealed as the
+  // next data frame.
+  Frame seal_payload(const std::uint8_t* payload, std::size_t size, std::uint64_t now_ns,
+                     std::uint64_t capture_ns);
+
   static constexpr std::size_t kMaxRunBytes = sizeof(safecell_v1_MapChunk{}.runs.bytes);
 
  private:
