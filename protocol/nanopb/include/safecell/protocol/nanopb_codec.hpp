@@ -5,7 +5,6 @@
 // an oversize field or count among them, is a refusal, never a truncated message.
 // Real-time safe: no allocation (nanopb without PB_ENABLE_MALLOC), bounded by the payload size.
 
-#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -28,8 +27,10 @@ Status decode_message(const std::uint8_t* payload, std::size_t size,
 // wire, also one the enum does not name; loading that as the enum type is undefined behaviour, so
 // the field's bytes are read as its integer and compared against the enum's values.
 template <typename Enum>
-constexpr std::underlying_type_t<Enum> wire_enum(const Enum& field) noexcept {
-  return std::bit_cast<std::underlying_type_t<Enum>>(field);
+std::underlying_type_t<Enum> wire_enum(const Enum& field) noexcept {
+  std::underlying_type_t<Enum> number{};
+  __builtin_memcpy(&number, &field, sizeof number);  // bytes, not a load of the enum type
+  return number;
 }
 
 // kCapacityExceeded when the encoding does not fit out[0..capacity); kInvalidArgument when the
