@@ -181,7 +181,7 @@ TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {
   joints.joint_count = 6;
   joints.position_rad[2] = 0.5;
   joints.read_time_ns = 22 * kMs;
-  link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0,
+  link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0, 0,
                          22 * kMs);
   const safecell_v1_Message sent = last_sent();
   ASSERT_EQ(sent.which_body, safecell_v1_Message_joint_state_tag);

@@ -71,6 +71,18 @@ TEST(ControllerConfig, RefusalsNameTheFieldLineAndValue) {
   EXPECT_NE(refusal("- 1").find("a YAML map"), std::string::npos);
 }
 
+// Only grid and robot are required; a file without the other sections takes their defaults
+// (yaml-cpp throws on indexing a missing section: the reader must not).
+TEST(ControllerConfig, OptionalSectionsMayBeLeftOut) {
+  const std::string text = example();
+  const std::string minimal = text.substr(0, text.find("\ntiming:") + 1);
+  ASSERT_NE(minimal.find("robot:"), std::string::npos);
+  const ControllerConfig config = parse_controller_config(minimal, "controller.yaml");
+  EXPECT_EQ(config.timing.period_ms, ControllerTiming{}.period_ms);
+  EXPECT_EQ(config.pool_blocks, 0u);
+  EXPECT_TRUE(config.task.goals_rad.empty());
+}
+
 TEST(ControllerModule, WithoutACoprocessorTheRobotIsHeld) {
   ControllerConfig config = load_controller_config(SAFECELL_CONTROLLER_EXAMPLE);
   config.link.listen.port = 0;  // any free port

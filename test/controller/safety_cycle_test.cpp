@@ -156,6 +156,28 @@ TEST_F(SafetyCycleTest, AMapThatGetsTooOldStopsTheRobotUntilAcknowledged) {
   EXPECT_TRUE(robot_.moving());
 }
 
+// The drives come back after a category-1 stop: once power is restored, the next command (which
+// reaches the drives an actuation delay later) moves the robot again.
+TEST(SimulatedRobotPower, ACommandAfterRestoredPowerMovesTheRobot) {
+  SimulatedRobot robot(robot_config());
+  const double velocity[3] = {0.5, 0.0, 0.0};
+  robot.command_speed_scale(1.0);
+  (void)robot.command_joint_velocity(velocity, 3);
+  robot.step(0.5);
+  ASSERT_TRUE(robot.moving());
+  robot.stop(StopCategory::kCategory1);
+  robot.step(1.0);
+  ASSERT_FALSE(robot.moving());
+  ASSERT_FALSE(robot.powered());
+  ASSERT_TRUE(robot.restore_power());
+  robot.step(0.004);  // a cycle passes before the next command
+  robot.command_speed_scale(1.0);
+  (void)robot.command_joint_velocity(velocity, 3);
+  robot.step(0.1);
+  EXPECT_TRUE(robot.powered());
+  EXPECT_TRUE(robot.moving());
+}
+
 TEST_F(SafetyCycleTest, AHashMismatchStopsLatched) {
   open_session();
   ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
@@ -186,6 +208,20 @@ TEST_F(SafetyCycleTest, ALateCycleIsAWatchdogFault) {
   const CycleReport report = cycle();
   EXPECT_EQ(report.state, CycleState::kFault);
   EXPECT_EQ(report.fault, CycleFault::kWatchdog);
+}
+
+// The budget covers the cycle's work up to the robot's command; the report after it is I/O (on a
+// host a loopback send can keep the thread for milliseconds). A slow send is no overrun; the
+// lateness it causes is the window's to judge.
+TEST_F(SafetyCycleTest, TheBudgetEndsAtTheCommand) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  port_.on_send = [this] { robot_.step(3e-3); };  // every send keeps the thread 3 ms (budget 2)
+  const CycleReport slow_report = cycle(1.0);     // the next cycle still starts 4 ms after
+  EXPECT_EQ(slow_report.state, CycleState::kMoving);
+  EXPECT_EQ(slow_report.watchdog_fault, WatchdogFault::kNone);
+  port_.on_send = nullptr;
+  EXPECT_EQ(cycle().state, CycleState::kMoving);
 }
 
 TEST_F(SafetyCycleTest, ALookAheadStopIsCategoryTwoAndLiftsWhenTheWayIsFree) {

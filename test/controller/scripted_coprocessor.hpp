@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <vector>
 
 #include "safecell/controller/host/scripted_coprocessor.hpp"
@@ -22,6 +23,7 @@ class MemoryPort final : public LinkPort {
  public:
   bool send(const std::uint8_t* data, std::size_t size) noexcept override {
     sent.emplace_back(data, data + size);
+    if (on_send) on_send();
     return true;
   }
   std::size_t receive(std::uint8_t* buffer, std::size_t capacity) noexcept override {
@@ -34,6 +36,7 @@ class MemoryPort final : public LinkPort {
   }
   std::deque<Bytes> inbox;
   std::vector<Bytes> sent;
+  std::function<void()> on_send;  // e.g. a send that keeps the thread (time passes)
 };
 
 // The coprocessor's side (controller/host's ScriptedCoprocessor) for the grids of the controller

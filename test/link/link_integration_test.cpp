@@ -146,7 +146,7 @@ class ControllerSide {
         JointSample joints;
         joints.joint_count = 6;
         joints.read_time_ns = now();
-        link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0,
+        link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0, 0,
                                now());
         next_joint_state += 4'000'000;
       }

@@ -106,6 +106,10 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
 
   command(planned_rad_s, command_velocities);
   watchdog_.checkpoint(CycleStep::kCommand);
+  // The budget ends here: the robot has its command. The report below is I/O whose time a host
+  // cannot bound (a loopback send runs the receiver's network stack); if it keeps the thread, the
+  // next cycle starts late, and the window (max_period, the look-ahead's t_cycle) catches that.
+  const std::uint64_t commanded_ns = clock_.now_ns();
 
   JointSample sample;
   sample.joint_count = report_.joints.joint_count;
@@ -114,10 +118,12 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
     sample.position_rad[j] = report_.joints.position_rad[j];
     sample.velocity_rad_s[j] = report_.joints.velocity_rad_s[j];
   }
-  link_.send_joint_state(sample, wire_state(report_.state), report_.speed_scale, now);
+  const std::uint8_t critical = report_.look_ahead.critical_joint;
+  link_.send_joint_state(sample, wire_state(report_.state), report_.speed_scale,
+                         critical == kNoCriticalJoint ? 0U : critical + 1U, now);
   watchdog_.checkpoint(CycleStep::kReport);
 
-  const WatchdogFault watchdog_fault = watchdog_.end_cycle(clock_.now_ns());
+  const WatchdogFault watchdog_fault = watchdog_.end_cycle(commanded_ns);
   if (watchdog_fault != WatchdogFault::kNone && report_.state != CycleState::kFault) {
     // Found at the cycle's end (an overrun, a broken flow): stop now, not a cycle later.
     if (latched_ == CycleFault::kNone) latched_ = CycleFault::kWatchdog;

@@ -30,9 +30,16 @@ class Reader {
     return "(a " + std::string(node.IsSequence() ? "list" : "map") + ")";
   }
 
+  // parent[key], or an undefined node when the parent itself is missing (an optional section
+  // left out: yaml-cpp throws on indexing an undefined node).
+  static YAML::Node child(const YAML::Node& parent, const std::string& key) {
+    if (!parent.IsDefined() || !parent.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    return parent[key];
+  }
+
   YAML::Node map(const YAML::Node& parent, const std::string& key, const std::string& field,
                  bool required) const {
-    const YAML::Node node = parent[key];
+    const YAML::Node node = child(parent, key);
     if (!node.IsDefined()) {
       if (required) fail(parent, field, "missing; expected a map");
       return node;
@@ -43,7 +50,7 @@ class Reader {
 
   double number(const YAML::Node& parent, const std::string& key, const std::string& field,
                 double fallback, double lo, double hi, bool required = false) const {
-    const YAML::Node node = parent[key];
+    const YAML::Node node = child(parent, key);
     if (!node.IsDefined()) {
       if (required) fail(parent, field, "missing; expected a number");
       return fallback;
@@ -65,7 +72,7 @@ class Reader {
   std::uint64_t unsigned_number(const YAML::Node& parent, const std::string& key,
                                 const std::string& field, std::uint64_t fallback,
                                 std::uint64_t hi) const {
-    const YAML::Node node = parent[key];
+    const YAML::Node node = child(parent, key);
     if (!node.IsDefined()) return fallback;
     std::uint64_t value = 0;
     try {
@@ -80,7 +87,7 @@ class Reader {
 
   bool boolean(const YAML::Node& parent, const std::string& key, const std::string& field,
                bool fallback) const {
-    const YAML::Node node = parent[key];
+    const YAML::Node node = child(parent, key);
     if (!node.IsDefined()) return fallback;
     try {
       return node.as<bool>();
@@ -91,7 +98,7 @@ class Reader {
 
   StopCategory category(const YAML::Node& parent, const std::string& key, const std::string& field,
                         StopCategory fallback) const {
-    const YAML::Node node = parent[key];
+    const YAML::Node node = child(parent, key);
     if (!node.IsDefined()) return fallback;
     const std::string text = node.IsScalar() ? node.Scalar() : "";
     if (text == "category_1" || text == "1") return StopCategory::kCategory1;
@@ -101,7 +108,7 @@ class Reader {
 
   UdpAddress address(const YAML::Node& parent, const std::string& key, const std::string& field,
                      const UdpAddress& fallback) const {
-    const YAML::Node node = parent[key];
+    const YAML::Node node = child(parent, key);
     if (!node.IsDefined()) return fallback;
     const std::string text = node.IsScalar() ? node.Scalar() : "";
     const std::size_t colon = text.rfind(':');
@@ -211,6 +218,8 @@ void read_rest(const Reader& reader, const YAML::Node& root, ControllerConfig& c
       reader.number(timing, "budget_ms", "timing.budget_ms", t.period_ms / 2, 0.01, t.period_ms);
   t.watchdog_ms = reader.number(timing, "watchdog_ms", "timing.watchdog_ms", t.watchdog_ms,
                                 t.period_ms, 10000.0);
+  t.max_period_ms = reader.number(timing, "max_period_ms", "timing.max_period_ms",
+                                  1.5 * t.period_ms, t.period_ms, t.watchdog_ms);
   t.max_data_age_ms = reader.number(timing, "max_data_age_ms", "timing.max_data_age_ms",
                                     t.max_data_age_ms, 1.0, 10000.0);
   t.max_clock_lead_ms = reader.number(timing, "max_clock_lead_ms", "timing.max_clock_lead_ms",

@@ -102,6 +102,10 @@ void SimulatedRobot::stop(StopCategory category) noexcept {
 bool SimulatedRobot::restore_power() noexcept {
   if (moving()) return false;
   powered_ = true;
+  // The stop is over: held at scale 0 until a command says otherwise (left stopping, the next
+  // step at standstill would switch the drives off again before that command is due).
+  stopping_ = false;
+  target_scale_ = 0.0;
   return true;
 }
 

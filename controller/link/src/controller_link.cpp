@@ -254,7 +254,8 @@ void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) no
 }
 
 void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
-                                      double speed_scale, std::uint64_t now_ns) noexcept {
+                                      double speed_scale, std::uint32_t critical_joint,
+                                      std::uint64_t now_ns) noexcept {
   if (!session_up_) return;
   reply_ = safecell_v1_Message_init_zero;
   reply_.which_body = safecell_v1_Message_joint_state_tag;
@@ -270,6 +271,7 @@ void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_Con
   out.applied_map_version = store_.version();
   out.state = state;
   out.speed_scale = speed_scale;
+  out.critical_joint = critical_joint;
   send(sealer_, joints.read_time_ns, now_ns);
 }
 

@@ -13,7 +13,9 @@
 #include "safecell/cli/luts_record_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/cli/validate_command.hpp"
+#include "safecell/closed_loop/controller_setup.hpp"
 #include "safecell/files/atomic_write.hpp"
+#include "safecell/link/link_errors.hpp"
 #include "safecell/lut/lut_file.hpp"
 
 namespace safecell {
@@ -36,13 +38,18 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   DemoOptions demo;
   CLI::App* demo_command = app.add_subcommand(
       "demo",
-      "The simulated cell: the robot moving, a person walking in close to it and out again, the "
-      "sensing pipeline on every frame; writes a report folder (camera views, C-space slices, "
+      "The closed loop on the simulated cell, in real time: this coprocessor and "
+      "safecell-controller "
+      "(the controller core on the simulated robot, a second process) over loopback UDP; the robot "
+      "works through a pick-and-place task while a person walks in, reaches towards it and leaves. "
+      "Writes a report folder (index.html, timeline.png, camera views, C-space slices, "
       "summary.json)");
   demo_command->add_option("--cell", demo.cell_path,
                            "Cell file (YAML); without it the built-in default cell");
-  demo_command->add_option("--seconds", demo.seconds, "Simulated time")->capture_default_str();
-  demo_command->add_option("--fps", demo.fps, "Camera frames per second")->capture_default_str();
+  demo_command->add_option("--seconds", demo.seconds, "Duration (real time), 5..3600 s")
+      ->capture_default_str();
+  demo_command->add_option("--fps", demo.fps, "Camera frames per second, 2..60")
+      ->capture_default_str();
   demo_command->add_option("--out", demo.out_dir, "Report folder")->capture_default_str();
   demo_command->add_option("--lut-cache", demo.lut_cache,
                            "Folder of cached look-up tables; default $SAFECELL_CACHE or "
@@ -50,10 +57,27 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   demo_command->add_option("--seed", demo.seed, "Seed of the sensor noise and the checks")
       ->capture_default_str();
   demo_command
-      ->add_option("--views-every", demo.views_every,
-                   "Cycles between saved camera views and slices (0: none)")
+      ->add_option("--views-every", demo.views_every_s,
+                   "Seconds between saved camera views and slices (0: none)")
+      ->capture_default_str();
+  demo_command
+      ->add_option("--checks-per-frame", demo.checks_per_cycle,
+                   "Configurations checked against the map (FCL) per checked frame")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 10000));
+  demo_command
+      ->add_option("--check-every", demo.check_every, "Frames between checked frames (0: none)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000000));
+  demo_command
+      ->add_option("--acknowledge-after", demo.acknowledge_after_s,
+                   "The demo's operator acknowledges a controller fault after it held this many "
+                   "seconds (0: never)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 3600.0));
+  demo_command->add_option("--controller-program", demo.controller_program,
+                           "The safecell-controller program; default $SAFECELL_CONTROLLER, the one "
+                           "beside safecell, or the one this build made");
   demo_command->callback([&] { action = [&] { exit_code = run_demo(demo, out, err); }; });
 
   CLI::App* cell = app.add_subcommand("cell", "Inspect a cell description");
@@ -335,6 +359,12 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const LutFileError& error) {
+    err << "error: " << error.what() << '\n';
+    return kExitBadInput;
+  } catch (const LinkSetupError& error) {
+    err << "error: " << error.what() << '\n';
+    return kExitBadInput;
+  } catch (const ClosedLoopSetupError& error) {
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const std::exception& error) {

@@ -49,13 +49,28 @@ cv::Mat slice(const CspaceGrid& grid, CellIndex at_cell, std::uint32_t axis_x, s
 
 cv::Mat forbidden_slice(const CspaceGrid& grid, const CellSet& forbidden,
                         const CellSet& static_cells, CellIndex robot_cell, std::uint32_t axis_x,
-                        std::uint32_t axis_y, const std::string& title) {
-  return slice(grid, robot_cell, axis_x, axis_y, title, [&](CellIndex cell) {
+                        std::uint32_t axis_y, const std::string& title,
+                        const std::vector<CellIndex>& path) {
+  cv::Mat image = slice(grid, robot_cell, axis_x, axis_y, title, [&](CellIndex cell) {
     if (cell == robot_cell) return cv::Vec3b(0, 200, 0);
     if (static_cells.test(cell)) return cv::Vec3b(0, 0, 110);
     if (forbidden.test(cell)) return cv::Vec3b(40, 40, 230);
     return cv::Vec3b(255, 255, 255);
   });
+  const int scale = cell_scale(grid, axis_x, axis_y);
+  std::vector<cv::Point> points;
+  for (const CellIndex cell : path) {
+    const auto coords = grid.coords_of(cell);
+    if (!coords.ok()) continue;
+    const cv::Point centre(
+        kMargin + static_cast<int>(coords.value().along[axis_x]) * scale + scale / 2,
+        kMargin + static_cast<int>(coords.value().along[axis_y]) * scale + scale / 2);
+    if (points.empty() || points.back() != centre) points.push_back(centre);
+  }
+  if (points.size() > 1) {
+    cv::polylines(image, points, false, cv::Scalar(120, 60, 0), 2, cv::LINE_AA);
+  }
+  return image;
 }
 
 cv::Mat camera_overlay(const cv::Mat& frame, const FeatureMask& blocked, const FeatureMask& robot,

@@ -7,6 +7,7 @@
 
 #include <opencv2/core/mat.hpp>
 #include <string>
+#include <vector>
 
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
@@ -14,10 +15,12 @@
 namespace safecell {
 
 // One slice over joints axis_x (across) x axis_y (down), each cell `scale` pixels, with a title
-// and the joints named on the axes. CV_8UC3.
+// and the joints named on the axes; `path` (cells the robot passed through, oldest first) is
+// drawn over it as a line through the cells' centres in the slice's two joints. CV_8UC3.
 cv::Mat forbidden_slice(const CspaceGrid& grid, const CellSet& forbidden,
                         const CellSet& static_cells, CellIndex robot_cell, std::uint32_t axis_x,
-                        std::uint32_t axis_y, const std::string& title);
+                        std::uint32_t axis_y, const std::string& title,
+                        const std::vector<CellIndex>& path = {});
 
 // A camera frame (CV_8UC1) with its feature cells tinted: the robot's silhouette blue, the
 // obstacles after robot removal red, blocked cells that were removed as the robot yellow. CV_8UC3.

@@ -27,6 +27,10 @@ constexpr ArrivalLimits kUnsyncedLimits{std::numeric_limits<std::uint64_t>::max(
                                         std::numeric_limits<std::uint64_t>::max() / 2,
                                         std::numeric_limits<std::uint64_t>::max() / 2};
 
+// StopRequest.detail holds 96 bytes on the controller (session.options), its NUL included: a
+// longer one would not decode there and count as corruption.
+constexpr std::size_t kStopDetailBytes = 95;
+
 std::string hex(std::uint64_t value) {
   std::ostringstream text;
   text << "0x" << std::hex << value;
@@ -113,6 +117,15 @@ void CoprocessorLink::send_clock_echo() {
   message.mutable_clock_echo()->set_echo_id(next_echo_id_++);
   message.mutable_clock_echo()->set_request_sent_ns(now());
   send_message(message, 0);
+}
+
+void CoprocessorLink::send_stop_request(v1::FaultCause cause, const std::string& detail) {
+  if (!clock_sync_.offset()) throw std::logic_error("link: send_stop_request before open()");
+  v1::Message message;
+  message.mutable_stop_request()->set_cause(cause);
+  message.mutable_stop_request()->set_detail(detail.substr(0, kStopDetailBytes));
+  const std::uint64_t now_controller = clock_sync_.to_controller(now());
+  send_message(message, now_controller);
 }
 
 MapUpdate CoprocessorLink::send_map(const CellSet& map, std::uint64_t capture_ns,
@@ -214,6 +227,7 @@ bool CoprocessorLink::handle(std::span<const std::uint8_t> datagram) {
             clock_sync_.to_coprocessor(message.joint_state().controller_time_ns());
       }
       last_joint_state_ = std::move(received);
+      for (const JointStateHandler& handler : on_joint_state_) handler(*last_joint_state_);
       break;
     }
     case v1::Message::kClockEcho: {

@@ -83,8 +83,10 @@ class ControllerLink {
   bool poll(std::uint64_t now_ns) noexcept;
 
   // Sends this cycle's joint state; it carries the held map's version as the acknowledgement.
+  // critical_joint: the joint deciding a slow-down or stop, counted from 1 (0: none).
   void send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
-                        double speed_scale, std::uint64_t now_ns) noexcept;
+                        double speed_scale, std::uint32_t critical_joint,
+                        std::uint64_t now_ns) noexcept;
 
   LinkBlock block(std::uint64_t now_ns) const noexcept;
   // Clears the error latch and a requested stop (an operator's acknowledgement).

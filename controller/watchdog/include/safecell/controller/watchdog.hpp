@@ -6,7 +6,8 @@
 //             of order is a fault, found at the cycle's end.
 //   window    cycle starts are at least min_period and at most max_period apart: too early means
 //             a runaway loop, too late a stall or a missed cycle.
-//   budget    a cycle's work (begin_cycle -> end_cycle) takes at most budget_ns: an overrun.
+//   budget    a cycle's work (begin_cycle -> end_cycle) takes at most budget_ns: an overrun. The
+//             safety cycle ends it at the robot's command (its report after that is I/O).
 //   stalled   no cycle ended for longer than max_period: checked from outside the cycle (a timer
 //             interrupt, the host module's supervisor thread, the robot's own watchdog).
 // Every fault latches until acknowledge(); the cycle stops the robot (category 1) while latched.

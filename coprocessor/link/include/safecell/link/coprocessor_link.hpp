@@ -64,11 +64,21 @@ class CoprocessorLink {
                      std::uint32_t camera_count);
   // Sends one clock echo request (call now and then: drift).
   void send_clock_echo();
+  // Asks the controller to stop (a clean shutdown, an operator): it holds the robot, latched,
+  // until its operator acknowledges. `detail` is cut to what one frame's field holds.
+  void send_stop_request(v1::FaultCause cause, const std::string& detail);
+
+  // Adds a handler called with every joint state of the session as it arrives (the smart
+  // buffer's feed, a recorder), on the thread that polls, in the order added.
+  using JointStateHandler = std::function<void(const ReceivedJointState&)>;
+  void on_joint_state(JointStateHandler handler) { on_joint_state_.push_back(std::move(handler)); }
 
   // Handles what arrives within `wait` (returns early after the first datagram when `wait` is 0).
   void poll(std::chrono::microseconds wait);
 
   std::uint64_t session_id() const { return session_id_; }
+  // Why the controller refused the session, once it has (open() then throws).
+  const std::optional<std::string>& refused_because() const { return refused_because_; }
   const ClockSync& clock_sync() const { return clock_sync_; }
   const MapPublisher& publisher() const { return publisher_; }
   const ErrorLatch& latch() const { return latch_; }
@@ -98,6 +108,7 @@ class CoprocessorLink {
   std::optional<std::string> refused_because_;
   std::uint32_t next_echo_id_ = 1;
   std::optional<ReceivedJointState> last_joint_state_;
+  std::vector<JointStateHandler> on_joint_state_;
   std::vector<v1::FaultReport> controller_faults_;
   std::vector<std::uint8_t> buffer_;
 };

@@ -5,10 +5,10 @@
 //              coprocessor's cell gives, to the last bit (its fingerprint opens the session)
 //   robot      the simulated robot: per joint max_speed_rad_s, accel_rad_s2, decel_rad_s2; the
 //              actuation delay; the start joints
-//   timing     period_ms, budget_ms, watchdog_ms (T_wd), max_data_age_ms, max_clock_lead_ms
-//   safety     human_speed_m_s, min_healthy_cameras, max_look_ahead_cells, the stop categories
-//   link       listen and coprocessor addresses (IPv4:port), ids, the LUT fingerprint
-//   task       goals_rad (a list of joint vectors), repeat
+//   timing     period_ms, max_period_ms, budget_ms, watchdog_ms (T_wd), max_data_age_ms,
+//   max_clock_lead_ms safety     human_speed_m_s, min_healthy_cameras, max_look_ahead_cells, the
+//   stop categories link       listen and coprocessor addresses (IPv4:port), ids, the LUT
+//   fingerprint task       goals_rad (a list of joint vectors), repeat
 // controller/host/controller.example.yaml has every field with its meaning. Every refusal names
 // the file, line, field and value, and what was expected (ControllerConfigError).
 
@@ -32,6 +32,12 @@ class ControllerConfigError : public std::runtime_error {
 
 struct ControllerTiming {
   double period_ms = 4.0;
+  // The watchdog's window: a cycle that begins later than this after the last is a fault (stop).
+  // The look-ahead takes it as t_cycle, the longest time to its next check. The file's default:
+  // 1.5 periods. A
+  // host without real-time scheduling needs more than the default (its cycles jitter by
+  // milliseconds under load), and pays for it with a longer look-ahead.
+  double max_period_ms = 6.0;
   double budget_ms = 2.0;
   double watchdog_ms = 100.0;
   double max_data_age_ms = 150.0;

@@ -39,7 +39,8 @@ struct ModuleStatus {
   std::uint64_t cycles = 0;
   std::uint64_t overruns = 0;  // cycles that began later than one period after the last
   double worst_period_ms = 0.0;
-  std::string detail;  // why the task failed, when it did
+  double worst_cycle_ms = 0.0;  // the safety cycle's own work (the watchdog's budget)
+  std::string detail;           // why the task failed, when it did
 };
 
 class ControllerModule {

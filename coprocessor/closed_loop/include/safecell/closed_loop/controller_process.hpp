@@ -1,0 +1,39 @@
+#pragma once
+// safecell-controller as a child process: started with its configuration file, its output into
+// a log file; stopped with SIGTERM (the module stops the robot and exits), killed only when it
+// does not exit in time. The destructor stops a process still running.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace safecell {
+
+class ControllerProcess {
+ public:
+  // Throws ClosedLoopSetupError naming the program when it cannot be started.
+  ControllerProcess(const std::filesystem::path& program, const std::vector<std::string>& args,
+                    const std::filesystem::path& log_file);
+  ~ControllerProcess();
+  ControllerProcess(const ControllerProcess&) = delete;
+  ControllerProcess& operator=(const ControllerProcess&) = delete;
+
+  [[nodiscard]] bool running();
+  // The operator's acknowledgement of a latched fault (SIGUSR1 to safecell-controller).
+  void acknowledge_fault();
+  // SIGTERM, then waits up to `grace` for the exit; kills it after that. Returns the exit code
+  // (nullopt when it had to be killed).
+  std::optional<int> stop(std::chrono::milliseconds grace);
+  // The exit code once it has exited by itself.
+  [[nodiscard]] std::optional<int> exit_code() const { return exit_code_; }
+
+ private:
+  struct Child;
+  std::unique_ptr<Child> child_;
+  std::optional<int> exit_code_;
+};
+
+}  // namespace safecell

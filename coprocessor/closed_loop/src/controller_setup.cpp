@@ -1,0 +1,103 @@
+#include "safecell/closed_loop/controller_setup.hpp"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/udp.hpp>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace safecell {
+namespace {
+
+std::string exact(double value) {
+  std::ostringstream text;
+  text << std::setprecision(17) << value;
+  return text.str();
+}
+
+std::string list(const std::vector<double>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + exact(values[i]);
+  return text + "]";
+}
+
+}  // namespace
+
+std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup& setup) {
+  if (setup.joints.size() != grid.joint_count() || setup.start_rad.size() != grid.joint_count()) {
+    throw std::invalid_argument("controller setup: " + std::to_string(setup.joints.size()) +
+                                " joint limits and " + std::to_string(setup.start_rad.size()) +
+                                " start values for a grid of " +
+                                std::to_string(grid.joint_count()) + " joints");
+  }
+  std::ostringstream yaml;
+  yaml << "# Written by safecell for a closed loop on this machine; the grid is the coprocessor's "
+          "to the last bit.\n"
+       << "grid:\n  m_max_m: " << exact(grid.m_max_m()) << "\n  joints:\n";
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const JointSpec& joint = grid.joint(j);
+    yaml << "    - {lo_rad: " << exact(joint.lo_rad) << ", hi_rad: " << exact(joint.hi_rad)
+         << ", l_m: " << exact(joint.l_m)
+         << ", discretised: " << (joint.discretised ? "true" : "false") << "}\n";
+  }
+  yaml << "robot:\n  actuation_ms: " << exact(setup.actuation_ms) << "\n  joints:\n";
+  for (const SimulatedJointLimits& limits : setup.joints) {
+    yaml << "    - {max_speed_rad_s: " << exact(limits.max_speed_rad_s)
+         << ", accel_rad_s2: " << exact(limits.accel_rad_s2)
+         << ", decel_rad_s2: " << exact(limits.decel_rad_s2) << "}\n";
+  }
+  yaml << "  start_rad: " << list(setup.start_rad) << "\n"
+       << "timing:\n  period_ms: " << exact(setup.period_ms)
+       << "\n  max_period_ms: " << exact(setup.max_period_ms)
+       << "\n  budget_ms: " << exact(setup.budget_ms)
+       << "\n  watchdog_ms: " << exact(setup.watchdog_ms)
+       << "\n  max_data_age_ms: " << exact(setup.max_data_age_ms)
+       << "\n  max_clock_lead_ms: " << exact(setup.max_clock_lead_ms) << "\n"
+       << "safety:\n  min_healthy_cameras: " << setup.min_healthy_cameras
+       << "\n  max_look_ahead_cells: " << setup.max_look_ahead_cells << "\n"
+       << "link:\n  listen: 127.0.0.1:" << setup.listen_port
+       << "\n  coprocessor: 127.0.0.1:" << setup.coprocessor_port
+       << "\n  lut_fingerprint: " << setup.lut_fingerprint << "\n"
+       << "task:\n  goals_rad:\n";
+  for (const std::vector<double>& goal : setup.goals_rad) yaml << "    - " << list(goal) << "\n";
+  yaml << "  repeat: " << (setup.repeat ? "true" : "false") << "\n";
+  return yaml.str();
+}
+
+std::filesystem::path find_controller_program(const std::string& explicit_path) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> places;
+  if (!explicit_path.empty()) {
+    places.emplace_back(explicit_path);
+  } else {
+    if (const char* from_env = std::getenv("SAFECELL_CONTROLLER")) places.emplace_back(from_env);
+    std::error_code error;
+    const fs::path self = fs::read_symlink("/proc/self/exe", error);
+    if (!error) places.push_back(self.parent_path() / "safecell-controller");
+#ifdef SAFECELL_CONTROLLER_BUILD_PATH
+    places.emplace_back(SAFECELL_CONTROLLER_BUILD_PATH);
+#endif
+  }
+  std::string looked;
+  for (const fs::path& place : places) {
+    std::error_code error;
+    if (fs::is_regular_file(place, error)) return place;
+    looked += (looked.empty() ? "" : ", ") + place.string();
+  }
+  throw ClosedLoopSetupError(
+      "the controller program safecell-controller was not found (looked at " +
+      (looked.empty() ? std::string("nothing") : looked) +
+      "); build it (cmake --build --preset host) or name it with "
+      "--controller-program");
+}
+
+std::uint16_t free_udp_port() {
+  boost::asio::io_context context;
+  boost::asio::ip::udp::socket socket(
+      context, boost::asio::ip::udp::endpoint(boost::asio::ip::make_address("127.0.0.1"), 0));
+  return socket.local_endpoint().port();
+}
+
+}  // namespace safecell

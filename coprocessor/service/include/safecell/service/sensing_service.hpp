@@ -1,0 +1,80 @@
+#pragma once
+// One map cycle of the coprocessor service: a frame set -> the robot's pose at its exposure (the
+// smart buffer, fed by the link's joint stream) -> the sensing pipeline -> the map update to the
+// controller. Between cycles serve_link() takes in the joint stream and the acknowledgements.
+//
+// When the pose at the exposure is unknown (no recent joints, too uncertain: see
+// robot_pose_at_exposure.hpp), or the pipeline refuses the frames, the cycle sends an
+// all-forbidden map and names why: the controller then stops the robot. A frame set with fewer
+// known views than the camera threshold is sent as it is, with its healthy-camera count, and the
+// controller stops on that.
+// Thread context: one thread (the service's); not synchronised.
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/link/coprocessor_link.hpp"
+#include "safecell/link/joint_buffer.hpp"
+#include "safecell/pipeline/sensing_pipeline.hpp"
+
+namespace safecell {
+
+struct SensingServiceSettings {
+  JointBufferLimits joints;        // the robot's acceleration limits, the buffer's bounds
+  double widening_budget_m = 0.0;  // what the removal allows for timing (removal_widening_m)
+  std::uint32_t camera_threshold = 2;
+};
+
+// What one cycle did, for the status line, the report and the incident recorder.
+struct ServiceCycle {
+  std::uint64_t index = 0;        // cycles so far, this one included
+  std::uint64_t exposure_ns = 0;  // the set's median exposure, coprocessor clock
+  std::uint64_t sent_ns = 0;      // when the map update left
+  bool pose_known = false;
+  std::vector<double> q;      // the robot at the exposure, when known
+  std::string all_forbidden;  // why the whole map was forbidden this cycle; empty: it was not
+  std::uint32_t known_views = 0;
+  std::vector<std::size_t> blocked_per_camera;   // blocked feature cells
+  std::vector<std::size_t> obstacle_per_camera;  // after robot removal
+  std::size_t forbidden_cells = 0;
+  std::uint64_t map_version = 0;
+  std::size_t map_frames = 0;  // frames the update took
+  CycleTimes times;
+};
+
+class SensingService {
+ public:
+  // Keeps references to all arguments. Registers itself for the link's joint states.
+  SensingService(const CspaceGrid& grid, SensingPipeline& pipeline, CoprocessorLink& link,
+                 SensingServiceSettings settings);
+  SensingService(const SensingService&) = delete;
+  SensingService& operator=(const SensingService&) = delete;
+
+  // One map cycle on `frames` (exposures in the coprocessor's steady clock).
+  const ServiceCycle& process(const FrameSet& frames);
+  // Serves the link (joint states, echoes) until `until` passes.
+  void serve_link(std::chrono::steady_clock::time_point until);
+
+  [[nodiscard]] const ServiceCycle& last_cycle() const { return cycle_; }
+  [[nodiscard]] const JointBuffer& joints() const { return joints_; }
+  [[nodiscard]] const CellSet& last_map() const { return *last_map_; }
+
+ private:
+  const CspaceGrid& grid_;
+  SensingPipeline& pipeline_;
+  CoprocessorLink& link_;
+  SensingServiceSettings settings_;
+  JointBuffer joints_;
+  CellSet all_forbidden_;
+  const CellSet* last_map_;
+  ServiceCycle cycle_;
+};
+
+// Seconds of the steady clock as its nanoseconds (exposure stamps to the link's clock).
+std::uint64_t steady_seconds_to_ns(double seconds);
+std::uint64_t steady_now_ns();
+
+}  // namespace safecell
