@@ -158,6 +158,13 @@ TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
   TaskOutcome outcome = TaskOutcome::kStopped;
   for (;;) {
     deadline += period_ns;
+    // Until the next cycle: whenever a frame arrives, map work in slices (an update is applied
+    // when it comes, not at the next cycle: exposure to applied stays short), up to shortly
+    // before the deadline; then the last stretch asleep.
+    for (std::uint64_t t = monotonic_ns(); t + period_ns / 8 < deadline; t = monotonic_ns()) {
+      if (!p.port.wait_readable(static_cast<int>((deadline - period_ns / 8 - t) / 1000))) break;
+      (void)p.cycle.service_link(deadline - period_ns / 8);
+    }
     sleep_until(deadline);
     const std::uint64_t now = monotonic_ns();
     // Late by more than half a period (a long re-plan, the host busy): the schedule starts again

@@ -272,6 +272,7 @@ void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_Con
   out.state = state;
   out.speed_scale = speed_scale;
   out.critical_joint = critical_joint;
+  out.applied_map_time_ns = store_.version() != 0 ? map_applied_ns_ : 0;
   send(sealer_, joints.read_time_ns, now_ns);
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "end_to_end_bench.hpp"
 #include "safecell/bench/map_sequence_writer.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cli/text_table.hpp"
@@ -103,6 +104,7 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
            << run.min_time_s << " s each)...\n"
            << std::flush;
   const std::vector<BenchmarkFigure> figures = run_project_benchmarks(run);
+  const EndToEndFigures e2e = measure_end_to_end(options.quick, progress);
 
   if (!options.json) {
     using Align = TextTable::Align;
@@ -113,6 +115,14 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
       table.add_row({figure.name, fixed(figure.median_ms, 3), fixed(figure.max_ms, 3)});
     }
     table.print(out);
+    out << "\nend to end (4 cameras, safecell-controller on loopback, " << e2e.frames
+        << " frames at 30 frames/s): exposure -> applied in the controller p50 "
+        << fixed(e2e.latency_p50_ms, 3) << " ms, p99 " << fixed(e2e.latency_p99_ms, 3)
+        << " ms, worst " << fixed(e2e.latency_max_ms, 3) << " ms (to sent p99 "
+        << fixed(e2e.to_sent_p99_ms, 3) << " ms); " << e2e.updates_not_applied << " not applied, "
+        << e2e.all_forbidden_frames << " all forbidden; back to back the "
+        << "service takes " << fixed(e2e.service_fps, 0) << " frames/s, the controller applies "
+        << fixed(e2e.sustained_fps, 0) << " maps/s\n";
     return;
   }
   nlohmann::ordered_json report;
@@ -160,6 +170,16 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
   for (auto figure = controller.begin(); figure != controller.end(); ++figure) {
     report[figure.key()] = figure.value();
   }
+  report["e2e_frames"] = e2e.frames;
+  report["e2e_latency_p50_ms"] = e2e.latency_p50_ms;
+  report["e2e_latency_p99_ms"] = e2e.latency_p99_ms;
+  report["e2e_latency_max_ms"] = e2e.latency_max_ms;
+  report["e2e_to_sent_p50_ms"] = e2e.to_sent_p50_ms;
+  report["e2e_to_sent_p99_ms"] = e2e.to_sent_p99_ms;
+  report["e2e_updates_not_applied"] = e2e.updates_not_applied;
+  report["e2e_all_forbidden_frames"] = e2e.all_forbidden_frames;
+  report["service_fps"] = e2e.service_fps;
+  report["sustained_fps"] = e2e.sustained_fps;
   report["repetitions"] = run.repetitions;
   report["benchmarks"] = std::move(all);
   out << report.dump(2) << '\n';

@@ -37,6 +37,26 @@ double mean(const std::vector<double>& values) {
 
 }  // namespace
 
+JointRecord joint_record(const ReceivedJointState& received, const ClockSync& clock,
+                         std::uint64_t start_ns) {
+  const auto since_start = [start_ns](std::uint64_t ns) {
+    return (static_cast<double>(ns) - static_cast<double>(start_ns)) * 1e-9;
+  };
+  const v1::JointState& state = received.state;
+  JointRecord sample;
+  sample.time_s = since_start(received.coprocessor_time_ns);
+  sample.q.assign(state.position_rad().begin(), state.position_rad().end());
+  sample.velocity.assign(state.velocity_rad_s().begin(), state.velocity_rad_s().end());
+  sample.state = state.state();
+  sample.speed_scale = state.speed_scale();
+  sample.critical_joint = state.critical_joint();
+  sample.applied_map_version = state.applied_map_version();
+  if (state.applied_map_time_ns() != 0 && clock.offset()) {
+    sample.applied_map_time_s = since_start(clock.to_coprocessor(state.applied_map_time_ns()));
+  }
+  return sample;
+}
+
 ContactFigures check_contacts(const RobotModel& robot_model, const ClosedLoopRecord& record,
                               const PersonAt& person_at) {
   ContactFigures figures;
@@ -116,8 +136,10 @@ StateFigures state_figures(const ClosedLoopRecord& record) {
     held = sample.applied_map_version;
     const auto exposure = exposure_of.find(held);
     if (exposure != exposure_of.end()) {
-      figures.latency_ms.push_back((sample.time_s - exposure->second) * 1e3);
-      figures.latency_at_s.push_back(sample.time_s);
+      const double applied_s =
+          sample.applied_map_time_s > 0.0 ? sample.applied_map_time_s : sample.time_s;
+      figures.latency_ms.push_back((applied_s - exposure->second) * 1e3);
+      figures.latency_at_s.push_back(applied_s);
     }
   }
   return figures;

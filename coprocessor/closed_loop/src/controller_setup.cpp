@@ -1,5 +1,6 @@
 #include "safecell/closed_loop/controller_setup.hpp"
 
+#include <algorithm>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/udp.hpp>
 #include <cstdlib>
@@ -24,6 +25,19 @@ std::string list(const std::vector<double>& values) {
 }
 
 }  // namespace
+
+std::vector<SimulatedJointLimits> comfortable_joint_limits(const RobotModel& robot,
+                                                           const CspaceGrid& grid) {
+  std::vector<SimulatedJointLimits> limits;
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const bool arm = j < 3;
+    const double urdf = j < robot.joints.size() ? robot.joints[j].max_speed : 0.0;
+    const double pace = arm ? 1.0 : 2.0;
+    const double accel = arm ? 4.0 : 8.0;
+    limits.push_back({urdf > 0.0 ? std::min(urdf, pace) : pace, accel, accel});
+  }
+  return limits;
+}
 
 std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup& setup) {
   if (setup.joints.size() != grid.joint_count() || setup.start_rad.size() != grid.joint_count()) {
@@ -60,7 +74,7 @@ std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup
        << "link:\n  listen: 127.0.0.1:" << setup.listen_port
        << "\n  coprocessor: 127.0.0.1:" << setup.coprocessor_port
        << "\n  lut_fingerprint: " << setup.lut_fingerprint << "\n"
-       << "task:\n  goals_rad:\n";
+       << "task:\n  goals_rad:" << (setup.goals_rad.empty() ? " []\n" : "\n");
   for (const std::vector<double>& goal : setup.goals_rad) yaml << "    - " << list(goal) << "\n";
   yaml << "  repeat: " << (setup.repeat ? "true" : "false") << "\n";
   return yaml.str();

@@ -141,15 +141,18 @@ MapUpdate CoprocessorLink::send_map(const CellSet& map, std::uint64_t capture_ns
   return update;
 }
 
-void CoprocessorLink::poll(std::chrono::microseconds wait) {
+std::size_t CoprocessorLink::poll(std::chrono::microseconds wait) {
   const auto until = std::chrono::steady_clock::now() + wait;
+  std::size_t handled = 0;
   do {
     const auto left = std::chrono::duration_cast<std::chrono::microseconds>(
         until - std::chrono::steady_clock::now());
     const auto size = transport_.receive(buffer_, std::max(left, std::chrono::microseconds(0)));
-    if (!size) return;
+    if (!size) return handled;
     (void)handle({buffer_.data(), std::min(*size, buffer_.size())});
+    ++handled;
   } while (std::chrono::steady_clock::now() < until);
+  return handled;
 }
 
 void CoprocessorLink::handle_handshake_answer(const FrameView& frame) {

@@ -1,5 +1,7 @@
 #include "safecell/link/udp_transport.hpp"
 
+#include <fcntl.h>
+
 // <utility> before Asio: Boost 1.74's coroutine header uses std::exchange without including it
 // (a compile error with GCC 12 in C++20).
 #include <utility>
@@ -43,6 +45,8 @@ UdpTransport::UdpTransport(const UdpEndpoint& local, const UdpEndpoint& peer)
   state_->peer = endpoint_of(peer, "peer");
   boost::system::error_code error;
   state_->socket.open(bind_to.protocol(), error);
+  // Not inherited by programs this process starts (the controller in a closed loop).
+  if (!error) (void)::fcntl(state_->socket.native_handle(), F_SETFD, FD_CLOEXEC);
   if (!error) state_->socket.bind(bind_to, error);
   if (error) {
     throw LinkSetupError("link: cannot bind UDP " + local.address + ":" +
@@ -67,6 +71,24 @@ std::optional<std::size_t> UdpTransport::receive(std::span<std::uint8_t> buffer,
   // One byte more than the caller's buffer: a datagram that fills it all was too long.
   std::optional<std::size_t> received;
   udp::endpoint sender;
+  if (timeout <= std::chrono::microseconds(0)) {
+    // Only what is waiting now (the asynchronous read below would need time to run its handler,
+    // and a deadline already passed gives it none): a datagram waits when bytes are available,
+    // and then the blocking read returns at once.
+    while (!received) {
+      boost::system::error_code error;
+      if (state_->socket.available(error) == 0 || error) return std::nullopt;
+      std::size_t size =
+          state_->socket.receive_from(asio::buffer(buffer.data(), buffer.size()), sender, 0, error);
+      if (error == asio::error::message_size) {
+        size = buffer.size() + 1;
+        error = {};
+      }
+      if (error) return std::nullopt;
+      if (sender == state_->peer) received = size;
+    }
+    return received;
+  }
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!received) {
     bool done = false;

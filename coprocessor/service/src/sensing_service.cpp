@@ -79,10 +79,12 @@ const ServiceCycle& SensingService::process(const FrameSet& frames) {
 }
 
 void SensingService::serve_link(std::chrono::steady_clock::time_point until) {
+  while (link_.poll(std::chrono::microseconds(0)) > 0) {
+  }
   while (true) {
     const auto left = until - std::chrono::steady_clock::now();
     if (left <= std::chrono::steady_clock::duration::zero()) return;
-    link_.poll(std::chrono::duration_cast<std::chrono::microseconds>(left));
+    (void)link_.poll(std::chrono::duration_cast<std::chrono::microseconds>(left));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "safecell/link/coprocessor_link.hpp"
 #include "safecell/robot/robot_model.hpp"
 #include "safecell/sim/human_figure.hpp"
 #include "safecell/v1/joints.pb.h"
@@ -26,6 +27,8 @@ struct JointRecord {
   double speed_scale = 0.0;
   std::uint32_t critical_joint = 0;  // from 1; 0: none
   std::uint64_t applied_map_version = 0;
+  // When the controller swapped that map in, in the same seconds (0: not reported).
+  double applied_map_time_s = 0.0;
 };
 
 // One map cycle of the coprocessor.
@@ -40,6 +43,11 @@ struct CycleRecord {
   bool person_present = false;
   std::string all_forbidden;  // why the whole map was forbidden; empty: it was not
 };
+
+// A joint state from the link as a record, its times in seconds since start_ns (coprocessor
+// clock, through the link's clock offset).
+JointRecord joint_record(const ReceivedJointState& received, const ClockSync& clock,
+                         std::uint64_t start_ns);
 
 struct ClosedLoopRecord {
   std::vector<JointRecord> joints;
@@ -82,8 +90,8 @@ struct StateFigures {
   std::size_t stops = 0;      // entries into stopped
   std::size_t slowdowns = 0;  // entries into slowed
   std::size_t faults = 0;     // entries into fault
-  // Exposure -> the first joint state carrying that map (an upper bound of exposure -> applied,
-  // by at most one control cycle), and when that joint state was read.
+  // Exposure -> the controller swapped the map in (from the joint state's applied time; the first
+  // joint state carrying the map when the controller does not report it), and when.
   std::vector<double> latency_ms;
   std::vector<double> latency_at_s;
 };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/robot/robot_model.hpp"
 
 namespace safecell {
 
@@ -47,6 +48,12 @@ struct ControllerSetup {
   std::vector<std::vector<double>> goals_rad;
   bool repeat = true;
 };
+
+// The simulated robot's limits for a cell's robot: the URDF's speed limits, held to a pace people
+// near the robot find comfortable (1 rad/s for the arm's first three joints, 2 rad/s for the
+// wrist), and the order of acceleration of a data sheet (4 and 8 rad/s^2).
+std::vector<SimulatedJointLimits> comfortable_joint_limits(const RobotModel& robot,
+                                                           const CspaceGrid& grid);
 
 // The YAML text of controller.example.yaml's shape. Numbers are written with 17 significant
 // digits, so the controller reads back the very doubles (and the grid's fingerprint) given here.

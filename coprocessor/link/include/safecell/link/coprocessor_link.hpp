@@ -73,8 +73,9 @@ class CoprocessorLink {
   using JointStateHandler = std::function<void(const ReceivedJointState&)>;
   void on_joint_state(JointStateHandler handler) { on_joint_state_.push_back(std::move(handler)); }
 
-  // Handles what arrives within `wait` (returns early after the first datagram when `wait` is 0).
-  void poll(std::chrono::microseconds wait);
+  // Handles what arrives within `wait` (returns early after the first datagram when `wait` is 0);
+  // returns how many datagrams it handled.
+  std::size_t poll(std::chrono::microseconds wait);
 
   std::uint64_t session_id() const { return session_id_; }
   // Why the controller refused the session, once it has (open() then throws).

@@ -55,7 +55,8 @@ class SensingService {
 
   // One map cycle on `frames` (exposures in the coprocessor's steady clock).
   const ServiceCycle& process(const FrameSet& frames);
-  // Serves the link (joint states, echoes) until `until` passes.
+  // Serves the link (joint states, echoes) until `until` passes, and at least takes in what is
+  // already waiting (so a loop that runs behind still hears the joint stream).
   void serve_link(std::chrono::steady_clock::time_point until);
 
   [[nodiscard]] const ServiceCycle& last_cycle() const { return cycle_; }

@@ -1,0 +1,55 @@
+#pragma once
+// The report folder of `safecell demo`: the pictures composed during the run (camera views,
+// forbidden-map slices with the robot's path), timeline.png, floor_coverage.png, summary.json and
+// index.html, all written atomically. Private to the CLI.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "safecell/closed_loop/closed_loop_record.hpp"
+#include "safecell/closed_loop/demo_world.hpp"
+#include "safecell/lut/cell_set.hpp"
+#include "safecell/validation/scene_check.hpp"
+#include "simulated_sensing.hpp"
+
+namespace safecell {
+
+// The pictures of one moment, composed in the loop and written after it (PNG encoding would cost
+// the loop frames).
+struct DemoSnapshot {
+  std::size_t cycle = 0;
+  double time_s = 0.0;
+  cv::Mat views;
+  CellSet forbidden;
+  CellIndex robot_cell = 0;
+  std::vector<CellIndex> path;
+};
+
+inline constexpr double kDemoPathSeconds = 3.0;  // of the robot's path drawn on each slice
+
+// The four cameras with their blocked, robot and obstacle cells, and the controller's state.
+cv::Mat demo_views_picture(const std::vector<cv::Mat>& frames, const SensingPipeline& pipeline,
+                           const CellModel& cell, const std::string& state);
+
+struct DemoRun {
+  double seconds = 0.0;
+  double fps = 0.0;
+  ClosedLoopRecord record;
+  std::vector<DemoSnapshot> snapshots;
+  SceneCheck checks;
+  std::size_t frames_skipped = 0;
+  std::vector<double> acknowledged_s;  // when the demo's operator acknowledged a fault
+  bool controller_died = false;
+  std::optional<int> controller_exit;
+};
+
+// Writes the report into `folder` and returns whether the run was safe (no contact while moving,
+// nothing missed, the controller alive to the end). The summary goes to `out`.
+bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensing& sensing,
+                       const DemoWorld& world, const std::vector<std::vector<double>>& goals,
+                       const DemoRun& run, std::ostream& out, std::ostream& log);
+
+}  // namespace safecell

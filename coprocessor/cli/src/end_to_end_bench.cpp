@@ -1,0 +1,142 @@
+#include "end_to_end_bench.hpp"
+
+#include <unistd.h>
+#include <chrono>
+#include <filesystem>
+#include <map>
+
+#include "safecell/closed_loop/closed_loop_record.hpp"
+#include "safecell/closed_loop/controller_session.hpp"
+#include "safecell/closed_loop/replayed_frame_sets.hpp"
+#include "safecell/sim/demo_scenario.hpp"
+#include "safecell/validation/percentile.hpp"
+#include "simulated_sensing.hpp"
+
+namespace safecell {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kFps = 30.0;
+
+// A scratch folder for the controller's file and log, removed with the object.
+struct ScratchFolder {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("safecell-e2e-" + std::to_string(getpid()));
+  ScratchFolder() { std::filesystem::create_directories(path); }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+
+// The person of the demo walking through the cell past the still robot, rendered in advance.
+std::vector<std::vector<cv::Mat>> rendered_sets(SimulatedSensing& sensing,
+                                                const std::vector<double>& q, std::size_t count) {
+  const HumanWalker person = demo_person(sensing.cell);
+  std::vector<std::vector<cv::Mat>> sets;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double t = static_cast<double>(k) / kFps;
+    SimScene scene{q, {person.pose_at(t)}};
+    sets.push_back(sensing.sim.render(scene, k + 1, t));
+  }
+  return sets;
+}
+
+}  // namespace
+
+EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
+  const std::filesystem::path program = find_controller_program("");
+  SimulatedSensing sensing("", "", 1, log);
+  const ScratchFolder folder;
+  ControllerSetup setup;
+  setup.joints = comfortable_joint_limits(*sensing.cell.robot, sensing.grid);
+  setup.start_rad = demo_robot_at(sensing.grid, 0.0);  // held there: no task
+  setup.min_healthy_cameras = static_cast<std::uint32_t>(sensing.cell.camera_threshold);
+  ControllerSession session(sensing.cell, sensing.grid, sensing.pipeline,
+                            sensing.luts.set.fingerprint, setup,
+                            {program, folder.path, kFps, sensing.fusion.sync_error_s, {}}, log);
+  const std::uint64_t start_ns = steady_now_ns();
+  ClosedLoopRecord record;
+  session.link().on_joint_state([&](const ReceivedJointState& received) {
+    if (received.coprocessor_time_ns == 0) return;
+    record.joints.push_back(joint_record(received, session.link().clock_sync(), start_ns));
+  });
+  log << "end to end: rendering the frames first (the camera's part)\n";
+  ReplayedFrameSets frames(
+      [&] {
+        std::vector<std::string> names;
+        for (const auto& camera : sensing.cell.cameras) names.push_back(camera.name());
+        return names;
+      }(),
+      rendered_sets(sensing, setup.start_rad, quick ? 15 : 60));
+  SensingService& service = session.service();
+  // The joint stream first, so that the robot's pose at the first exposure is known.
+  service.serve_link(Clock::now() + std::chrono::milliseconds(300));
+
+  EndToEndFigures figures;
+  figures.frames = quick ? 45 : 600;
+  log << "end to end: " << figures.frames << " frames at 30 frames/s, then back to back\n";
+  const auto period = std::chrono::nanoseconds(static_cast<std::int64_t>(1e9 / kFps));
+  std::map<std::uint64_t, double> exposure_of;  // map version -> exposure (s since start)
+  std::vector<double> to_sent_ms;
+  auto next = Clock::now();
+  for (std::size_t k = 0; k < figures.frames; ++k) {
+    next += period;
+    const ServiceCycle& cycle = service.process(frames.acquire());
+    if (!cycle.all_forbidden.empty() && figures.all_forbidden_frames++ == 0) {
+      log << "end to end: a map all forbidden (" << cycle.all_forbidden << ")\n";
+    }
+    const double exposure_s =
+        (static_cast<double>(cycle.exposure_ns) - static_cast<double>(start_ns)) * 1e-9;
+    exposure_of[cycle.map_version] = exposure_s;
+    to_sent_ms.push_back(static_cast<double>(cycle.sent_ns - cycle.exposure_ns) * 1e-6);
+    service.serve_link(next);
+  }
+  service.serve_link(Clock::now() + std::chrono::milliseconds(50));
+  std::vector<double> latency_ms;
+  std::map<std::uint64_t, double> applied_at;
+  for (const JointRecord& sample : record.joints) {
+    if (sample.applied_map_time_s > 0.0)
+      applied_at.emplace(sample.applied_map_version, sample.applied_map_time_s);
+  }
+  for (const auto& [version, exposure_s] : exposure_of) {
+    const auto applied = applied_at.find(version);
+    if (applied == applied_at.end()) {
+      ++figures.updates_not_applied;
+      continue;
+    }
+    latency_ms.push_back((applied->second - exposure_s) * 1e3);
+  }
+  figures.latency_p50_ms = percentile(latency_ms, 0.5);
+  figures.latency_p99_ms = percentile(latency_ms, 0.99);
+  figures.latency_max_ms = percentile(latency_ms, 1.0);
+  figures.to_sent_p50_ms = percentile(to_sent_ms, 0.5);
+  figures.to_sent_p99_ms = percentile(to_sent_ms, 0.99);
+
+  // Back to back: as fast as the service goes, serving the link between frames.
+  const std::size_t sustained = quick ? 30 : 300;
+  std::vector<std::uint64_t> versions;
+  const auto begin = Clock::now();
+  for (std::size_t k = 0; k < sustained; ++k) {
+    const ServiceCycle& cycle = service.process(frames.acquire());
+    if (!cycle.all_forbidden.empty() && figures.all_forbidden_frames++ == 0) {
+      log << "end to end: a map all forbidden (" << cycle.all_forbidden << ")\n";
+    }
+    versions.push_back(cycle.map_version);
+    service.serve_link(Clock::now());
+  }
+  const double elapsed_s = std::chrono::duration<double>(Clock::now() - begin).count();
+  service.serve_link(Clock::now() + std::chrono::milliseconds(50));
+  figures.service_fps = static_cast<double>(sustained) / elapsed_s;
+  std::size_t applied = 0;
+  for (const JointRecord& sample : record.joints) {
+    if (sample.applied_map_time_s > 0.0)
+      applied_at.emplace(sample.applied_map_version, sample.applied_map_time_s);
+  }
+  for (const std::uint64_t version : versions) applied += applied_at.count(version);
+  figures.sustained_fps = static_cast<double>(applied) / elapsed_s;
+  (void)session.finish("safecell bench finished");
+  return figures;
+}
+
+}  // namespace safecell

@@ -1,0 +1,33 @@
+#pragma once
+// The end-to-end figures of `safecell bench`: frame exposure -> map applied in the controller, on
+// loopback, with the default cell's 4 cameras and safecell-controller as its own process, at 30
+// frames/s; and the frame rate the service sustains back to back. The frames are rendered before
+// the clock starts (the camera's readout is the camera's); the exposure is the moment a frame set
+// is handed to the service, the end the controller's own report of when it swapped the map in.
+// Private to the CLI.
+
+#include <cstddef>
+#include <ostream>
+
+namespace safecell {
+
+struct EndToEndFigures {
+  std::size_t frames = 0;       // at 30 frames/s
+  double latency_p50_ms = 0.0;  // exposure -> applied in the controller
+  double latency_p99_ms = 0.0;
+  double latency_max_ms = 0.0;
+  double to_sent_p50_ms = 0.0;  // exposure -> the update's last frame sent (the pipeline)
+  double to_sent_p99_ms = 0.0;
+  std::size_t updates_not_applied = 0;  // of those frames, maps the controller never held
+  // Frames whose map was all forbidden (the robot's pose unknown): must be 0, or the figures
+  // measured a shortcut, not the pipeline.
+  std::size_t all_forbidden_frames = 0;
+  double service_fps = 0.0;  // frame sets per second the service takes, back to back
+  // Of those, the maps the controller applied per second: the rate sustained end to end.
+  double sustained_fps = 0.0;
+};
+
+// Throws what the closed loop's setup throws (the controller program missing, no session).
+EndToEndFigures measure_end_to_end(bool quick, std::ostream& log);
+
+}  // namespace safecell

@@ -1,0 +1,97 @@
+#include "safecell/closed_loop/controller_session.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include "safecell/files/atomic_write.hpp"
+#include "safecell/link/link_errors.hpp"
+#include "safecell/lut/configuration_silhouettes.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr std::chrono::seconds kStartUp{10};
+constexpr std::size_t kTailLines = 5;
+
+std::uint32_t microseconds(double ms) { return static_cast<std::uint32_t>(std::lround(ms * 1e3)); }
+
+}  // namespace
+
+ControllerSession::ControllerSession(const CellModel& cell, const CspaceGrid& grid,
+                                     SensingPipeline& pipeline, std::uint64_t lut_fingerprint,
+                                     ControllerSetup setup,
+                                     const ControllerSessionSettings& settings, std::ostream& log)
+    : setup_(std::move(setup)),
+      log_file_(settings.folder / "controller.log"),
+      transport_({"127.0.0.1", 0}, {"127.0.0.1", 0}) {
+  // This end binds first, so that the controller's file can name our port.
+  setup_.coprocessor_port = transport_.local_port();
+  setup_.listen_port = free_udp_port();
+  setup_.lut_fingerprint = lut_fingerprint;
+  transport_.set_peer({"127.0.0.1", setup_.listen_port});
+  const std::filesystem::path config_file = settings.folder / "controller.yaml";
+  write_file_atomically(config_file, controller_config_yaml(grid, setup_));
+  std::vector<std::string> args{"--config", config_file.string(), "--status-hz", "1"};
+  args.insert(args.end(), settings.extra_args.begin(), settings.extra_args.end());
+  process_ = std::make_unique<ControllerProcess>(settings.program, args, log_file_);
+  log << "controller: " << settings.program.string() << " (log " << log_file_.string() << ")\n";
+
+  CoprocessorLinkConfig link_config;
+  link_config.cell_count = grid.cell_count();
+  link_config.grid_fingerprint = grid.fingerprint();
+  link_config.lut_fingerprint = lut_fingerprint;
+  link_config.map_cycle_us = static_cast<std::uint32_t>(std::lround(1e6 / settings.fps));
+  link_config.control_cycle_us = microseconds(setup_.period_ms);
+  link_config.watchdog_us = microseconds(setup_.watchdog_ms);
+  link_config.max_data_age_us = microseconds(setup_.max_data_age_ms);
+  link_ = std::make_unique<CoprocessorLink>(link_config, transport_);
+  // The program needs a moment to start; a refusal, or the program gone, ends the wait.
+  const auto give_up = std::chrono::steady_clock::now() + kStartUp;
+  while (true) {
+    try {
+      link_->open(std::chrono::milliseconds(500));
+      break;
+    } catch (const LinkSetupError& error) {
+      if (link_->refused_because() || !process_->running() ||
+          std::chrono::steady_clock::now() > give_up) {
+        throw LinkSetupError(std::string(error.what()) +
+                             "; the controller's last words:" + log_tail());
+      }
+    }
+  }
+
+  SensingServiceSettings service_settings;
+  for (const SimulatedJointLimits& joint : setup_.joints) {
+    service_settings.joints.max_acceleration_rad_s2.push_back(
+        std::max(joint.accel_rad_s2, joint.decel_rad_s2));
+  }
+  service_settings.widening_budget_m =
+      removal_widening_m(*cell.robot, grid, 0.0, settings.sync_error_s).value_or(0.02);
+  service_settings.camera_threshold = static_cast<std::uint32_t>(cell.camera_threshold);
+  service_ = std::make_unique<SensingService>(grid, pipeline, *link_, service_settings);
+}
+
+ControllerSession::~ControllerSession() = default;
+
+std::string ControllerSession::log_tail() const {
+  std::ifstream in(log_file_);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::string text;
+  for (std::size_t i = lines.size() > kTailLines ? lines.size() - kTailLines : 0; i < lines.size();
+       ++i) {
+    text += "\n  " + lines[i];
+  }
+  return text.empty() ? " (none)" : text;
+}
+
+std::optional<int> ControllerSession::finish(const std::string& why) {
+  if (process_->running()) {
+    link_->send_stop_request(v1::FAULT_CAUSE_OPERATOR, why);
+    service_->serve_link(std::chrono::steady_clock::now() + std::chrono::milliseconds(50));
+  }
+  return process_->stop(std::chrono::seconds(3));
+}
+
+}  // namespace safecell
