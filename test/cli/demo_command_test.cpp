@@ -64,6 +64,11 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
     EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << (*it)[1].str();
   }
   EXPECT_GE(images, 4U);
+  // The film of the run, where this OpenCV can write one, is there and not empty.
+  std::smatch film;
+  if (std::regex_search(page, film, std::regex(R"re(<video src="([^"]+)")re"))) {
+    EXPECT_GT(fs::file_size(out / film[1].str()), 1000U) << film[1].str();
+  }
   EXPECT_NE(page.find("timeline.png"), std::string::npos);
   EXPECT_NE(run.out.find("contacts while moving 0"), std::string::npos) << run.out;
 }

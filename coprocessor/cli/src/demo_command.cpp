@@ -137,6 +137,8 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
           ? std::max<std::size_t>(
                 1, static_cast<std::size_t>(std::lround(options.views_every_s * options.fps)))
           : 0;
+  const auto video_every =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(options.fps / 5.0)));
   std::mt19937_64 rng(options.seed);
   std::optional<double> fault_since;  // the controller has reported a fault since then
   std::size_t cycle_count = 0;
@@ -203,6 +205,11 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
                                 options.checks_per_cycle, rng);
     }
     const JointRecord* joints = record.joints.empty() ? nullptr : &record.joints.back();
+    if (index % video_every == 0 && cycle.all_forbidden.empty()) {
+      run.video.add(demo_views_picture(
+          cameras.last_frames(), sensing.pipeline, sensing.cell,
+          fixed(time_s, 1) + " s  " + (joints ? state_name(joints->state) : "waiting")));
+    }
     if (views_every > 0 && index % views_every == 0 && cycle.all_forbidden.empty()) {
       DemoSnapshot snapshot;
       snapshot.cycle = index;

@@ -144,6 +144,13 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
       {"frames / skipped",
        std::to_string(record.cycles.size()) + " / " + std::to_string(run.frames_skipped)},
   };
+  const std::string film = run.video.write(folder, "run");
+  if (!film.empty()) {
+    page.film = {film,
+                 "The run as the cameras saw it (5 frames a second), the controller's state "
+                 "on every view: blocked cells red where they are obstacles, yellow where "
+                 "they are the robot itself."};
+  }
   page.pictures.push_back({"timeline.png",
                            "Over time: the robot's speed and speed scale, the person's distance, "
                            "the controller's state, the latency. The person's visit is shaded."});

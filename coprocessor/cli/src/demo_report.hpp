@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "report_video.hpp"
 #include "safecell/closed_loop/closed_loop_record.hpp"
 #include "safecell/closed_loop/demo_world.hpp"
 #include "safecell/lut/cell_set.hpp"
@@ -39,6 +40,7 @@ struct DemoRun {
   double fps = 0.0;
   ClosedLoopRecord record;
   std::vector<DemoSnapshot> snapshots;
+  ReportVideo video{5.0};  // the cameras with the state, 5 frames a second of the run
   SceneCheck checks;
   std::size_t frames_skipped = 0;
   std::vector<double> acknowledged_s;  // when the demo's operator acknowledged a fault

@@ -23,18 +23,7 @@ FrameSet ReplayedFrameSets::acquire() {
   const double exposure_s = static_cast<double>(steady_now_ns()) * 1e-9;
   const std::vector<cv::Mat>& frames = sets_[handed_out_ % sets_.size()];
   ++handed_out_;
-  FrameSet set;
-  set.index = handed_out_;
-  for (std::size_t c = 0; c < frames.size(); ++c) {
-    CameraFrame frame;
-    frame.camera = cameras_[c];
-    frame.image = frames[c];
-    frame.counter = handed_out_;
-    frame.exposure_s = exposure_s;
-    frame.stamp_source = StampSource::kBackend;
-    set.frames.push_back(std::move(frame));
-  }
-  return set;
+  return frame_set_exposed_at(cameras_, frames, handed_out_, exposure_s);
 }
 
 }  // namespace safecell

@@ -45,7 +45,13 @@ std::string report_page_html(const ReportPage& page) {
   for (const auto& [name, value] : page.figures) {
     html += "<tr><td>" + escaped(name) + "</td><td>" + escaped(value) + "</td></tr>\n";
   }
-  html += "</table>\n<h2>Pictures</h2>\n";
+  html += "</table>\n";
+  if (!page.film.path.empty()) {
+    html += "<h2>The run</h2>\n<figure><video src=\"" + escaped(page.film.path) +
+            "\" controls autoplay loop muted width=\"100%\"></video><figcaption>" +
+            escaped(page.film.caption) + "</figcaption></figure>\n";
+  }
+  html += "<h2>Pictures</h2>\n";
   for (const ReportPicture& picture : page.pictures) {
     html += "<figure><img src=\"" + escaped(picture.path) + "\" alt=\"" + escaped(picture.caption) +
             "\"><figcaption>" + escaped(picture.caption) + "</figcaption></figure>\n";

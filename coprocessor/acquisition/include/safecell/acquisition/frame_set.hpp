@@ -41,4 +41,11 @@ struct FrameSet {
   [[nodiscard]] std::size_t known_count() const;
 };
 
+// A set of frames exposed together at exposure_s by the source's own clock (kBackend), every view
+// known: one frame per camera, `images` in the order of `cameras`, each counted `index`.
+// Throws std::invalid_argument when the counts differ.
+FrameSet frame_set_exposed_at(const std::vector<std::string>& cameras,
+                              const std::vector<cv::Mat>& images, std::uint64_t index,
+                              double exposure_s);
+
 }  // namespace safecell

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "safecell/service/frame_set_source.hpp"
@@ -30,6 +31,7 @@ class LiveSimulatedCameras final : public FrameSetSource {
  private:
   SimulatedCell& cell_;
   SceneAt scene_at_;
+  std::vector<std::string> cameras_;  // the cell's camera names, in order
   std::uint64_t sets_ = 0;
   SimScene scene_;
   std::vector<cv::Mat> frames_;

@@ -20,6 +20,8 @@ struct ReportPage {
   bool passed = true;   // colours the verdict
   std::string story;    // what happened, in a paragraph
   std::vector<std::pair<std::string, std::string>> figures;  // name, value
+  ReportPicture
+      film;  // a video (WebM or MP4) shown above the pictures; none when its path is empty
   std::vector<ReportPicture> pictures;
 };
 
