@@ -14,9 +14,9 @@
 #include "safecell/lut/recorded_luts.hpp"
 #include "safecell/lut/silhouette_agreement.hpp"
 #include "safecell/lut/table_silhouettes.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
-#include "safecell/pipeline/simulated_robot_viewer.hpp"
 #include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
+#include "safecell/sim_sources/simulated_robot_viewer.hpp"
 #include "safecell/test/property.hpp"
 #include "silhouette_check.hpp"
 

@@ -7,8 +7,8 @@
 
 #include "model_fixture.hpp"
 #include "safecell/lut/model_luts.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {

@@ -15,8 +15,8 @@
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 
 namespace safecell {
 namespace {

@@ -10,8 +10,8 @@
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/features/noise_bits.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 #include "scene_options.hpp"
 
 namespace safecell {

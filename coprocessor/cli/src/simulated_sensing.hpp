@@ -12,8 +12,8 @@
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/simulated_cell.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 
 namespace safecell {
 

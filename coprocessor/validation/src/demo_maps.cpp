@@ -1,9 +1,9 @@
 #include "safecell/validation/demo_maps.hpp"
 
 #include "safecell/pipeline/sensing_pipeline.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/demo_scenario.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 
 namespace safecell {
 

@@ -7,8 +7,8 @@
 #include <thread>
 
 #include "safecell/pipeline/sensing_pipeline.hpp"
-#include "safecell/pipeline/simulated_reference.hpp"
 #include "safecell/sim/cell_simulation.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 #include "safecell/validation/percentile.hpp"
 
 namespace safecell {

@@ -1,4 +1,4 @@
-#include "safecell/pipeline/simulated_robot_viewer.hpp"
+#include "safecell/sim_sources/simulated_robot_viewer.hpp"
 
 #include <stdexcept>
 #include <string>

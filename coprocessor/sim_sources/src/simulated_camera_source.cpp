@@ -1,4 +1,4 @@
-#include "safecell/acquisition/simulated_camera_source.hpp"
+#include "safecell/sim_sources/simulated_camera_source.hpp"
 
 #include <cmath>
 #include <stdexcept>

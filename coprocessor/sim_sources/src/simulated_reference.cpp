@@ -1,4 +1,4 @@
-#include "safecell/pipeline/simulated_reference.hpp"
+#include "safecell/sim_sources/simulated_reference.hpp"
 
 #include <array>
 #include <numbers>
