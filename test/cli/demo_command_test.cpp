@@ -39,7 +39,7 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
        {"cycles", "stops", "slowdowns", "min_human_distance_m", "contacts_while_moving",
         "contacts_with_stopped_robot", "task_completed", "task_time_s",
         "task_time_without_people_s", "e2e_latency_p50_ms", "e2e_latency_p99_ms", "fusion_ms_p99",
-        "missed"}) {
+        "missed", "frames_skipped", "faults", "faults_acknowledged"}) {
     EXPECT_TRUE(summary.contains(field)) << field;
   }
   EXPECT_EQ(summary["contacts_while_moving"].get<int>(), 0);

@@ -75,7 +75,7 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
       std::isfinite(contacts.min_human_distance_m) ? contacts.min_human_distance_m : -1.0;
   nlohmann::ordered_json summary;
   summary["cycles"] = record.cycles.size();
-  summary["run.frames_skipped"] = run.frames_skipped;
+  summary["frames_skipped"] = run.frames_skipped;
   summary["controller_cycles"] = record.joints.size();
   summary["stops"] = states.stops;
   summary["slowdowns"] = states.slowdowns;

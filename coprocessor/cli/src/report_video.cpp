@@ -29,8 +29,8 @@ void ReportVideo::add(const cv::Mat& frame) {
 
 std::string ReportVideo::write(const std::filesystem::path& folder, const std::string& stem) const {
   if (jpeg_.empty()) return "";
-  const Container containers[] = {{".webm", cv::VideoWriter::fourcc('V', 'P', '8', '0')},
-                                  {".mp4", cv::VideoWriter::fourcc('a', 'v', 'c', '1')}};
+  const Container containers[] = {{".mp4", cv::VideoWriter::fourcc('a', 'v', 'c', '1')},
+                                  {".webm", cv::VideoWriter::fourcc('V', 'P', '8', '0')}};
   for (const Container& container : containers) {
     std::string name = stem + container.extension;
     const std::filesystem::path partial = folder / (".partial-" + name);

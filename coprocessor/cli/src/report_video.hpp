@@ -1,7 +1,7 @@
 #pragma once
 // A short film of a run for the report: frames kept as JPEG during the run (a few milliseconds
-// each, so the loop keeps its pace), written at the end as WebM (VP8, which every browser plays)
-// or, where this OpenCV cannot, as MP4 (H.264). Private to the CLI.
+// each, so the loop keeps its pace), written at the end as MP4 (H.264, which browsers play) or,
+// where this OpenCV cannot, as WebM (VP8). Private to the CLI.
 
 #include <cstdint>
 #include <filesystem>
@@ -20,7 +20,7 @@ class ReportVideo {
   void add(const cv::Mat& frame);
   [[nodiscard]] std::size_t frames() const { return jpeg_.size(); }
 
-  // Writes `stem`.webm (or `stem`.mp4) into `folder`, through a temporary file renamed when
+  // Writes `stem`.mp4 (or `stem`.webm) into `folder`, through a temporary file renamed when
   // whole; returns the file's name, or empty when no writer could open (the report goes on
   // without the film).
   std::string write(const std::filesystem::path& folder, const std::string& stem) const;
