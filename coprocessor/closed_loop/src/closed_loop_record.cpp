@@ -12,7 +12,6 @@ namespace safecell {
 namespace {
 
 constexpr double kGoalTolerance_rad = 0.02;
-constexpr double kAtRest_rad_s = 0.05;
 
 double fastest_joint(const std::vector<double>& velocity) {
   double fastest = 0.0;
@@ -92,9 +91,9 @@ TaskFigures task_figures(const ClosedLoopRecord& record,
   std::size_t next_goal = 0;
   bool started = false;  // the first arrival at goal 0 starts the clock
   for (const JointRecord& sample : record.joints) {
-    if (fastest_joint(sample.velocity) > kAtRest_rad_s || !at(sample.q, goals[next_goal])) {
-      continue;
-    }
+    // Arrived when every joint is within the tolerance of the goal: the gross-motion service
+    // turns to the next goal at once, so the robot need not come to rest there.
+    if (!at(sample.q, goals[next_goal])) continue;
     if (started || next_goal == 0) {
       arrivals.push_back(sample.time_s);
       started = true;

@@ -80,8 +80,9 @@ struct TaskFigures {
   bool completed_after_person_left = false;
 };
 
-// Goal arrivals from the joint samples (every joint within tolerance of the goal, at rest):
-// a move is the time from one arrival to the next goal's arrival.
+// Goal arrivals from the joint samples (every joint within 0.02 rad of the goal the robot is
+// heading for; it need not rest there): a move is the time from one arrival to the next goal's
+// arrival, counted from the first arrival at the first goal.
 TaskFigures task_figures(const ClosedLoopRecord& record,
                          const std::vector<std::vector<double>>& goals, double person_enters_s,
                          double person_leaves_s);
