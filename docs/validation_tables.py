@@ -215,6 +215,104 @@ w("`safecell cell coverage` places a person-sized body (a cylinder 0.3 m in radi
 w("")
 w("![floor coverage of the default cell](validation/coverage/floor_coverage.png)")
 w("")
+
+def closed_loop_section():
+    """The closed-loop runs of docs/closed_loop_validation.sh, when their reports are there."""
+    shards = [name for name in ("closed-loop-1", "closed-loop-2")
+              if os.path.exists(os.path.join(folder, name + ".json"))]
+    if not shards:
+        return
+    loop_commands = {}
+    loop_seconds = {}
+    with open(os.path.join(folder, "closed-loop-commands.tsv")) as tsv:
+        for line in tsv:
+            name, command, elapsed = line.rstrip("\n").split("\t")
+            loop_commands[name] = command
+            loop_seconds[name] = int(elapsed)
+    runs = [report(name) for name in shards]
+    control = report("closed-loop-control")
+
+    def total(key, runs=runs):
+        return sum(r["totals"][key] for r in runs)
+
+    def closest(runs):
+        values = [r["totals"]["min_human_distance_m"] for r in runs
+                  if r["totals"]["min_human_distance_m"] is not None]
+        return f"{min(values):.2f} m" if values else "-"
+
+    compared = total("tasks_compared")
+    with_people = sum(r["totals"]["task_time_with_people_mean_s"] * r["totals"]["tasks_compared"]
+                      for r in runs)
+    without = sum(r["totals"]["task_time_without_people_mean_s"] * r["totals"]["tasks_compared"]
+                  for r in runs)
+    w("## Closed loop: the whole system in simulated time")
+    w("")
+    w("`safecell validate --closed-loop` runs the coprocessor's pipeline on rendered frames, the "
+      "link over loopback UDP in the real protocol, and `safecell-controller --lockstep` as its own "
+      "process driving its simulated robot, in simulated time (the controller's clock moves only "
+      "when the validation says). A frame set every 1/30 s; its map reaches the controller 20 ms "
+      "after the exposure (readout, transfer and processing). People walk in at 0.8 to 1.6 m/s: "
+      "straight at the robot's base to 0.7 to 1.3 m from it, to the edge of the arm's sweep, or "
+      "across the cell 0.8 to 1.6 m past the base, reaching towards the robot while they stand. "
+      "Half of the tasks move as a robot program would (planned without the map: the look-ahead "
+      "alone slows and stops them), half with the safe gross-motion service (re-planned around "
+      "people). The ground truth is FCL between the simulated robot's own joints at every 4 ms "
+      "cycle and the person at that moment; a contact while any joint moves faster than "
+      "0.01 rad/s is a **contact while moving**.")
+    w("")
+    for name in shards:
+        w(f"- `{loop_commands[name]}` ({loop_seconds[name]} s)")
+    w(f"- `{loop_commands['closed-loop-control']}` ({loop_seconds['closed-loop-control']} s)")
+    w("")
+    w(table(["figure", "value"], [
+        ["scenarios", n(total("scenarios"))],
+        ["**contacts while moving**", f"**{n(total('contacts_while_moving'))}**"],
+        ["contacts with a stopped robot (robot samples)", n(total("contacts_with_stopped_robot"))],
+        ["robot samples checked with a person in the cell", n(total("samples_checked"))],
+        ["closest approach", closest(runs)],
+        ["stops / slow-downs / faults", f"{n(total('stops'))} / {n(total('slowdowns'))} / "
+                                         f"{n(total('faults'))}"],
+        ["frames all-forbidden", f"{n(total('all_forbidden_frames'))} of {n(total('frames'))}"],
+        ["tasks completed", f"{n(total('tasks_completed'))} of {n(total('scenarios'))}"],
+        ["task time with people / without (mean)",
+         f"{with_people / max(compared, 1):.2f} s / {without / max(compared, 1):.2f} s"],
+        ["productivity (time without / with)", pct(without / with_people if with_people else 0)],
+        ["worst scenario (time with / without)",
+         f"{max(r['totals']['worst_task_time_ratio'] for r in runs):.2f} x"],
+        ["simulated time / controller cycles",
+         f"{total('simulated_s'):,.0f} s / {n(total('controller_cycles'))}"],
+    ]))
+    w("")
+    kinds = sorted(set(k for r in runs for k in r["by_kind"]))
+    rows = []
+    for kind in kinds:
+        parts = [r["by_kind"][kind] for r in runs if kind in r["by_kind"]]
+        s = lambda key: sum(p[key] for p in parts)
+        values = [p["min_human_distance_m"] for p in parts if p["min_human_distance_m"] is not None]
+        t_with = sum(p["task_time_with_people_mean_s"] * p["tasks_compared"] for p in parts)
+        t_without = sum(p["task_time_without_people_mean_s"] * p["tasks_compared"] for p in parts)
+        rows.append([kind, n(s("scenarios")), n(s("contacts_while_moving")),
+                     n(s("contacts_with_stopped_robot")),
+                     f"{min(values):.2f}" if values else "-", n(s("stops")), n(s("slowdowns")),
+                     pct(t_without / t_with if t_with else 0)])
+    w(table(["person, robot", "scenarios", "contacts while moving", "with stopped robot",
+             "closest m", "stops", "slow-downs", "productivity"], rows))
+    w("")
+    c = control["totals"]
+    w("**Negative control** (`--negative-control look-ahead-off`: the controller's look-ahead "
+      "switched off by the test-only `safety.test_only_look_ahead_off`, on the first "
+      f"{n(c['scenarios'])} scenarios of the same run): {n(c['contacts_while_moving'])} robot "
+      f"samples in contact while moving, in {n(c['scenarios_with_contact_while_moving'])} "
+      "scenarios. The ground truth finds contacts when the protection is gone; with it, none.")
+    per_kind = control["by_kind"]
+    w("")
+    w(table(["person, robot (look-ahead off)", "scenarios", "contacts while moving"],
+            [[k, n(v["scenarios"]), n(v["contacts_while_moving"])]
+             for k, v in sorted(per_kind.items())]))
+    w("")
+
+
+closed_loop_section()
 w("## Certifying on a cluster")
 w("")
 w("A run splits into disjoint seeded shards (`--shard K/N` runs the K-th of N parts of the "

@@ -1,5 +1,6 @@
 // The Linux controller module: its configuration file (every refusal names the field and the
-// line) and a short run with no coprocessor, in which the robot must be held (waiting) all along.
+// line), a short run with no coprocessor, in which the robot must be held (waiting) all along,
+// and the lockstep channel of simulated time.
 
 #include <gtest/gtest.h>
 
@@ -7,7 +8,10 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "safecell/controller/host/controller_module.hpp"
+#include "safecell/controller/host/lockstep_runner.hpp"
 
 namespace safecell {
 namespace {
@@ -81,6 +85,99 @@ TEST(ControllerConfig, OptionalSectionsMayBeLeftOut) {
   EXPECT_EQ(config.timing.period_ms, ControllerTiming{}.period_ms);
   EXPECT_EQ(config.pool_blocks, 0u);
   EXPECT_TRUE(config.task.goals_rad.empty());
+}
+
+TEST(ControllerConfig, TaskMotionAndTheTestOnlySwitch) {
+  const std::string text = example();
+  const ControllerConfig plain = parse_controller_config(text, "controller.yaml");
+  EXPECT_EQ(plain.task.motion, TaskMotion::kGrossMotion);
+  EXPECT_FALSE(plain.safety.test_only_look_ahead_off);
+  const ControllerConfig program = parse_controller_config(
+      replaced(text, "motion: gross_motion", "motion: program"), "controller.yaml");
+  EXPECT_EQ(program.task.motion, TaskMotion::kProgram);
+  EXPECT_NE(refusal(replaced(text, "motion: gross_motion", "motion: teleport")).find("task.motion"),
+            std::string::npos);
+  const ControllerConfig off = parse_controller_config(
+      replaced(text, "  # test_only_look_ahead_off: true", "  test_only_look_ahead_off: true"),
+      "controller.yaml");
+  EXPECT_TRUE(off.safety.test_only_look_ahead_off);
+}
+
+// A pipe as the lockstep channel: the commands written before the runner starts.
+struct CommandPipe {
+  CommandPipe() { EXPECT_EQ(::pipe(fds), 0); }
+  ~CommandPipe() {
+    ::close(fds[0]);
+    if (fds[1] >= 0) ::close(fds[1]);
+  }
+  void write(const std::string& text) const {
+    EXPECT_EQ(::write(fds[1], text.data(), text.size()), static_cast<ssize_t>(text.size()));
+  }
+  void close_writer() {
+    ::close(fds[1]);
+    fds[1] = -1;
+  }
+  int fds[2] = {-1, -1};
+};
+
+ControllerConfig unconnected_config() {
+  ControllerConfig config = load_controller_config(SAFECELL_CONTROLLER_EXAMPLE);
+  config.link.listen.port = 0;  // any free port
+  config.link.coprocessor.port = 9;
+  return config;
+}
+
+struct LockstepRun {
+  int exit_code = 0;
+  std::string out;
+  std::string log;
+};
+
+// A stepped module without a coprocessor, given `commands` (nullptr: the channel closed at once).
+LockstepRun run_lockstep_on(const char* commands) {
+  const ControllerConfig config = unconnected_config();
+  ControllerModule module(config, ModuleTime::kStepped);
+  CommandPipe pipe;
+  if (commands != nullptr) {
+    pipe.write(commands);
+  } else {
+    pipe.close_writer();
+  }
+  std::ostringstream out;
+  std::ostringstream log;
+  const int code = run_lockstep(module, config.timing.period_ms, pipe.fds[0], out, log);
+  return {code, out.str(), log.str()};
+}
+
+// The lockstep contract (lockstep_runner.hpp): cycles only when told, one truth line each, the
+// clock never going back; without a coprocessor the robot is held all along.
+TEST(LockstepRunner, CyclesOnlyWhenToldAndReportsTheRobotEachCycle) {
+  const LockstepRun run = run_lockstep_on("advance 1100000000 0\nadvance 1100000000 0\nquit\n");
+  EXPECT_EQ(run.exit_code, 0) << run.log;
+  std::istringstream lines(run.out);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "ready 1000000000");
+  int cycles = 0;
+  while (std::getline(lines, line) && line.rfind("cycle ", 0) == 0) {
+    ++cycles;
+    EXPECT_NE(line.find(" waiting 0 "), std::string::npos) << line;
+  }
+  EXPECT_EQ(cycles, 25) << run.out;  // 100 ms of 4 ms cycles
+  EXPECT_EQ(line.rfind("at 1100000000 ", 0), 0U) << line;
+  std::getline(lines, line);
+  EXPECT_EQ(line.rfind("at 1100000000 ", 0), 0U) << "no cycle is due: " << line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "bye 25");
+}
+
+TEST(LockstepRunner, RefusesTimeGoingBackAndAClosedChannel) {
+  const LockstepRun back = run_lockstep_on("advance 1100000000 0\nadvance 1050000000 0\n");
+  EXPECT_EQ(back.exit_code, 2);
+  EXPECT_NE(back.log.find("advance 1050000000 0"), std::string::npos) << back.log;
+  const LockstepRun closed = run_lockstep_on(nullptr);
+  EXPECT_EQ(closed.exit_code, 2);
+  EXPECT_NE(closed.log.find("closed"), std::string::npos) << closed.log;
 }
 
 TEST(ControllerModule, WithoutACoprocessorTheRobotIsHeld) {

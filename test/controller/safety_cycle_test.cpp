@@ -37,14 +37,15 @@ SimulatedRobotConfig robot_config() {
 
 class SafetyCycleTest : public ::testing::Test {
  protected:
-  explicit SafetyCycleTest(std::uint32_t min_cameras = 1)
+  explicit SafetyCycleTest(std::uint32_t min_cameras = 1, bool look_ahead_off = false)
       : grid_(CspaceGrid::create(spec()).value()),
         robot_(robot_config()),
         clock_(robot_),
         store_(MapStoreLayout::of(grid_.cell_count(), default_pool_blocks(grid_.cell_count()))),
         link_(link_config(), port_, store_.store()),
         watchdog_({3 * kMs, 5 * kMs, 2 * kMs}),
-        cycle_(grid_, cycle_config(min_cameras), robot_, clock_, link_, store_.store(), watchdog_),
+        cycle_(grid_, cycle_config(min_cameras, look_ahead_off), robot_, clock_, link_,
+               store_.store(), watchdog_),
         coprocessor_(grid_.fingerprint(), kLuts, 0x5E55, grid_.cell_count()),
         free_(cell_bits::words_for(grid_.cell_count()), 0) {
     robot_.set_time_ns(1'000'000'000);
@@ -57,8 +58,9 @@ class SafetyCycleTest : public ::testing::Test {
     config.lut_fingerprint = kLuts;
     return config;
   }
-  static SafetyCycleConfig cycle_config(std::uint32_t min_cameras) {
+  static SafetyCycleConfig cycle_config(std::uint32_t min_cameras, bool look_ahead_off) {
     SafetyCycleConfig config;
+    config.look_ahead_switched_off = look_ahead_off;
     config.look_ahead.stop = SimulatedRobot::measure_stop_model(robot_config());
     config.min_healthy_cameras = min_cameras;
     return config;
@@ -188,6 +190,19 @@ TEST_F(SafetyCycleTest, AHashMismatchStopsLatched) {
   EXPECT_EQ(report.stop_category, StopCategory::kCategory1);
 }
 
+// The cells ahead of joint 0 forbidden, from the robot's cell on.
+Words blocked_ahead(const CspaceGrid& grid, SimulatedRobot& robot, const Words& free) {
+  JointAngles here;
+  const RobotJoints joints = robot.read();
+  for (std::uint32_t j = 0; j < 3; ++j) here.rad[j] = joints.position_rad[j];
+  const GridCoords at = grid.coords_containing(here).value();
+  Words blocked = free;
+  for (CellIndex c = 0; c < grid.cell_count(); ++c) {
+    if (grid.coords_of(c).value().along[0] > at.along[0] + 1) cell_bits::set(blocked.data(), c);
+  }
+  return blocked;
+}
+
 class SafetyCycleCamerasTest : public SafetyCycleTest {
  protected:
   SafetyCycleCamerasTest() : SafetyCycleTest(5) {}  // the scripted maps say 4 healthy cameras
@@ -227,16 +242,7 @@ TEST_F(SafetyCycleTest, TheBudgetEndsAtTheCommand) {
 TEST_F(SafetyCycleTest, ALookAheadStopIsCategoryTwoAndLiftsWhenTheWayIsFree) {
   open_session();
   ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
-  // Every cell ahead along joint 0 forbidden.
-  JointAngles here;
-  const RobotJoints joints = robot_.read();
-  for (std::uint32_t j = 0; j < 3; ++j) here.rad[j] = joints.position_rad[j];
-  const GridCoords at = grid_.coords_containing(here).value();
-  Words blocked = free_;
-  for (CellIndex c = 0; c < grid_.cell_count(); ++c) {
-    if (grid_.coords_of(c).value().along[0] > at.along[0] + 1) cell_bits::set(blocked.data(), c);
-  }
-  const CycleReport stopped = run_with_maps(40, blocked);
+  const CycleReport stopped = run_with_maps(40, blocked_ahead(grid_, robot_, free_));
   EXPECT_EQ(stopped.state, CycleState::kStopped);
   EXPECT_EQ(stopped.stop_category, StopCategory::kCategory2);
   EXPECT_TRUE(stopped.look_ahead.has_blocking_cell);
@@ -244,6 +250,29 @@ TEST_F(SafetyCycleTest, ALookAheadStopIsCategoryTwoAndLiftsWhenTheWayIsFree) {
   EXPECT_EQ(stopped.fault, CycleFault::kNone);
   EXPECT_TRUE(robot_.powered());
   EXPECT_EQ(run_with_maps(40, free_).state, CycleState::kMoving) << "no acknowledgement needed";
+}
+
+class SafetyCycleLookAheadOffTest : public SafetyCycleTest {
+ protected:
+  SafetyCycleLookAheadOffTest() : SafetyCycleTest(1, true) {}
+};
+
+// The closed-loop validation's negative control: with the look-ahead switched off the robot runs
+// on into forbidden cells at full speed (what the validation must then catch), while faults still
+// stop it.
+TEST_F(SafetyCycleLookAheadOffTest, TheRobotRunsIntoForbiddenCellsButFaultsStillStopIt) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  const CycleReport report = run_with_maps(40, blocked_ahead(grid_, robot_, free_));
+  EXPECT_EQ(report.state, CycleState::kMoving);
+  EXPECT_EQ(report.speed_scale, 1.0);
+  EXPECT_EQ(report.look_ahead.reason, LookAheadReason::kSwitchedOff);
+  EXPECT_TRUE(robot_.moving());
+  send_map(free_, true);  // a whole update whose hash is wrong (a large delta: a few cycles' work)
+  CycleReport fault = cycle();
+  for (int i = 0; i < 10 && fault.state != CycleState::kFault; ++i) fault = cycle();
+  EXPECT_EQ(fault.state, CycleState::kFault);
+  EXPECT_EQ(fault.fault, CycleFault::kMapRefused);
 }
 
 }  // namespace

@@ -93,7 +93,11 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
   const std::uint64_t capture = store_.capture_ns();
   report_.map_age_s =
       capture != 0 && now > capture ? static_cast<double>(now - capture) * 1e-9 : 0.0;
-  if (report_.map_version != 0 && report_.joints.valid) {
+  if (config_.look_ahead_switched_off) {
+    report_.look_ahead = LookAheadResult{};
+    report_.look_ahead.speed_scale = 1.0;
+    report_.look_ahead.reason = LookAheadReason::kSwitchedOff;
+  } else if (report_.map_version != 0 && report_.joints.valid) {
     MotionState motion;
     for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
       motion.position.rad[j] = report_.joints.position_rad[j];

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "safecell/controller/host/controller_module.hpp"
+#include "safecell/controller/host/lockstep_runner.hpp"
 
 namespace {
 
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
   double status_hz = 5.0;
   bool quiet = false;
   int realtime_priority = 20;
+  bool lockstep = false;
   app.add_option("--config", config_path, "the controller's YAML file (controller.example.yaml)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -75,6 +77,8 @@ int main(int argc, char** argv) {
   app.add_option("--realtime-priority", realtime_priority,
                  "SCHED_FIFO priority of the cycle, where allowed (0: ordinary scheduling)")
       ->check(CLI::Range(0, 99));
+  app.add_flag("--lockstep", lockstep,
+               "simulated time, stepped over stdin/stdout by safecell validate --closed-loop");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -83,6 +87,18 @@ int main(int argc, char** argv) {
 
   try {
     const safecell::ControllerConfig config = safecell::load_controller_config(config_path);
+    std::ostream& log = lockstep ? std::cerr : std::cout;
+    if (config.safety.test_only_look_ahead_off) {
+      log << "safecell-controller: WARNING: safety.test_only_look_ahead_off is set: the robot is "
+             "NOT slowed or stopped for people. A test setting (the validation's negative "
+             "control), never for a robot near people.\n";
+    }
+    if (lockstep) {
+      safecell::ControllerModule module(config, safecell::ModuleTime::kStepped);
+      log << "safecell-controller: lockstep on " << config.link.listen.ip << ":"
+          << module.listen_port() << ", cycle " << config.timing.period_ms << " ms\n";
+      return safecell::run_lockstep(module, config.timing.period_ms, 0, std::cout, log);
+    }
     safecell::ControllerModule module(config);
     running = &module;
     std::signal(SIGINT, on_signal);

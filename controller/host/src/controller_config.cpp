@@ -239,6 +239,8 @@ void read_rest(const Reader& reader, const YAML::Node& root, ControllerConfig& c
   s.look_ahead_stop =
       reader.category(safety, "look_ahead_stop", "safety.look_ahead_stop", s.look_ahead_stop);
   s.fault_stop = reader.category(safety, "fault_stop", "safety.fault_stop", s.fault_stop);
+  s.test_only_look_ahead_off =
+      reader.boolean(safety, "test_only_look_ahead_off", "safety.test_only_look_ahead_off", false);
 
   const YAML::Node link = reader.map(root, "link", "link", false);
   ControllerLinkSettings& l = config.link;
@@ -270,6 +272,15 @@ void read_rest(const Reader& reader, const YAML::Node& root, ControllerConfig& c
       config.task.goals_rad.push_back(std::move(goal));
     }
     config.task.repeat = reader.boolean(task, "repeat", "task.repeat", false);
+    const YAML::Node motion = task["motion"];
+    if (motion.IsDefined()) {
+      const std::string text = motion.IsScalar() ? motion.Scalar() : "";
+      if (text == "program") {
+        config.task.motion = TaskMotion::kProgram;
+      } else if (text != "gross_motion") {
+        reader.fail(motion, "task.motion", "is '" + text + "'; expected gross_motion or program");
+      }
+    }
   }
   const YAML::Node store = reader.map(root, "map_store", "map_store", false);
   config.pool_blocks = static_cast<std::uint32_t>(

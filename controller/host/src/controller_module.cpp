@@ -6,11 +6,14 @@
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/controller/host/planner_memory.hpp"
 #include "safecell/controller/host/simulated_robot.hpp"
 #include "safecell/controller/host/udp_link_port.hpp"
+#include "safecell/controller/map_view.hpp"
+#include "safecell/cspace/cell_bits.hpp"
 
 namespace safecell {
 namespace {
@@ -30,9 +33,16 @@ void sleep_until(std::uint64_t deadline_ns) {
   }
 }
 
-class MonotonicClock final : public ClockPort {
+// The module's clock: monotonic, or stepped by a driver (simulated time).
+class HostClock final : public ClockPort {
  public:
-  std::uint64_t now_ns() noexcept override { return monotonic_ns(); }
+  explicit HostClock(ModuleTime time) : stepped_(time == ModuleTime::kStepped) {}
+  std::uint64_t now_ns() noexcept override { return stepped_ ? stepped_ns_ : monotonic_ns(); }
+  void set(std::uint64_t now_ns) noexcept { stepped_ns_ = now_ns; }
+
+ private:
+  bool stepped_;
+  std::uint64_t stepped_ns_ = 0;
 };
 
 CspaceGrid grid_of(const ControllerConfig& config) {
@@ -58,7 +68,7 @@ const char* to_string(TaskOutcome outcome) noexcept {
 }
 
 struct ControllerModule::Parts {
-  explicit Parts(const ControllerConfig& config)
+  Parts(const ControllerConfig& config, ModuleTime time)
       : grid(grid_of(config)),
         store(MapStoreLayout::of(grid.cell_count(), config.pool_blocks != 0
                                                         ? config.pool_blocks
@@ -66,12 +76,17 @@ struct ControllerModule::Parts {
         port(config.link.listen, config.link.coprocessor),
         link(link_config(config, grid), port, store.store()),
         robot(config.robot),
+        clock(time),
         watchdog(watchdog_config(config)),
         cycle(grid, cycle_config(config), robot, clock, link, store.store(), watchdog),
         planner_layout(PlannerLayout::for_grid(grid.cell_count())),
         planner_memory(planner_layout),
         planner(grid, planner_layout, planner_memory.memory()),
-        motion(grid, planner, motion_config(config)) {}
+        motion(grid, planner, motion_config(config)),
+        free_slots(
+            (cell_bits::words_for(grid.cell_count()) + kStoreBlockWords - 1) / kStoreBlockWords,
+            kFreeSlot),
+        free_map(free_slots.data(), nullptr, grid.cell_count()) {}
 
   static ControllerLinkConfig link_config(const ControllerConfig& config, const CspaceGrid& grid) {
     ControllerLinkConfig out;
@@ -103,6 +118,7 @@ struct ControllerModule::Parts {
     out.min_healthy_cameras = config.safety.min_healthy_cameras;
     out.look_ahead_stop = config.safety.look_ahead_stop;
     out.fault_stop = config.safety.fault_stop;
+    out.look_ahead_switched_off = config.safety.test_only_look_ahead_off;
     return out;
   }
   static GrossMotionConfig motion_config(const ControllerConfig& config) {
@@ -119,43 +135,132 @@ struct ControllerModule::Parts {
   UdpLinkPort port;
   ControllerLink link;
   SimulatedRobot robot;
-  MonotonicClock clock;
+  HostClock clock;
   Watchdog watchdog;
   SafetyCycle cycle;
   PlannerLayout planner_layout;
   PlannerMemoryHost planner_memory;
   GridPlanner planner;
   GrossMotion motion;
+  // An all-free map: what TaskMotion::kProgram plans on.
+  std::vector<std::uint32_t> free_slots;
+  MapView free_map;
+  double planned[kMaxJoints] = {};  // the velocities planned after the last cycle
+  std::uint64_t start_ns = 0;
+  std::uint64_t last_start_ns = 0;
 };
 
-ControllerModule::ControllerModule(const ControllerConfig& config)
-    : config_(config), parts_(std::make_unique<Parts>(config)) {}
+ControllerModule::ControllerModule(const ControllerConfig& config, ModuleTime time)
+    : config_(config), parts_(std::make_unique<Parts>(config, time)) {}
 
 ControllerModule::~ControllerModule() = default;
 
 std::uint16_t ControllerModule::listen_port() const { return parts_->port.local_port(); }
+std::uint64_t ControllerModule::now_ns() const noexcept { return parts_->clock.now_ns(); }
+void ControllerModule::set_time_ns(std::uint64_t now_ns) noexcept { parts_->clock.set(now_ns); }
+int ControllerModule::socket_fd() const noexcept { return parts_->port.socket_fd(); }
+std::uint64_t ControllerModule::datagrams_received() const noexcept {
+  return parts_->port.datagrams_received();
+}
+std::uint64_t ControllerModule::datagrams_sent() const noexcept {
+  return parts_->port.datagrams_sent();
+}
+
+void ControllerModule::service_link(std::uint64_t until_ns) {
+  (void)parts_->cycle.service_link(until_ns);
+}
+
+namespace {
+
+JointAngles goal_angles(const ControllerConfig& config, std::size_t index) {
+  JointAngles goal;
+  for (std::size_t j = 0; j < config.task.goals_rad[index].size(); ++j) {
+    goal.rad[j] = config.task.goals_rad[index][j];
+  }
+  return goal;
+}
+
+}  // namespace
+
+void ControllerModule::begin(std::uint64_t start_ns) {
+  Parts& p = *parts_;
+  p.start_ns = start_ns;
+  p.last_start_ns = 0;
+  p.robot.set_time_ns(start_ns);
+  for (double& velocity : p.planned) velocity = 0.0;
+  status_ = ModuleStatus{};
+  status_.goals = config_.task.goals_rad.size();
+  outcome_ = TaskOutcome::kStopped;
+  if (status_.goals > 0) (void)p.motion.move_to(goal_angles(config_, 0));
+}
+
+bool ControllerModule::cycle(std::uint64_t now) {
+  Parts& p = *parts_;
+  const auto period_ns = static_cast<std::uint64_t>(config_.timing.period_ms * 1e6);
+  if (p.last_start_ns != 0) {
+    const double period_ms = static_cast<double>(now - p.last_start_ns) * 1e-6;
+    if (period_ms > status_.worst_period_ms) status_.worst_period_ms = period_ms;
+    if (now - p.last_start_ns > 2 * period_ns) ++status_.overruns;
+  }
+  p.last_start_ns = now;
+  if (now > p.robot.time_ns()) p.robot.step(static_cast<double>(now - p.robot.time_ns()) * 1e-9);
+  robot_joints_ = p.robot.read();
+  if (acknowledge_requested_.exchange(false)) p.cycle.acknowledge();
+  // The safety cycle first, on the deadline, with the velocities planned after the last one:
+  // the planner's time (a re-plan can take milliseconds) then never shifts the cycle's start,
+  // which the watchdog's window judges.
+  const CycleReport& report = p.cycle.run(p.planned, true);
+  const double work_ms = static_cast<double>(p.clock.now_ns() - report.start_ns) * 1e-6;
+  if (work_ms > status_.worst_cycle_ms) status_.worst_cycle_ms = work_ms;
+  const RobotJoints joints = p.robot.read();
+  if (config_.task.motion == TaskMotion::kProgram) {
+    p.motion.plan_velocity(joints, p.free_map, 1, now, p.planned);
+  } else {
+    p.motion.plan_velocity(joints, p.store.store().view(), p.store.store().version(), now,
+                           p.planned);
+  }
+  ++status_.cycles;
+  status_.elapsed_s = static_cast<double>(now - p.start_ns) * 1e-9;
+  status_.cycle = &report;
+  status_.motion = &p.motion.progress();
+
+  const MotionStatus motion = p.motion.progress().status;
+  if (motion == MotionStatus::kArrived && status_.goal < status_.goals) {
+    if (++status_.goal == status_.goals && config_.task.repeat) status_.goal = 0;
+    if (status_.goal < status_.goals) {
+      (void)p.motion.move_to(goal_angles(config_, status_.goal));
+    } else {
+      outcome_ = TaskOutcome::kCompleted;
+      return true;
+    }
+  } else if (motion == MotionStatus::kFailed) {
+    const PlanResult& plan = p.motion.progress().last_plan;
+    std::ostringstream detail;
+    detail << "goal " << status_.goal + 1 << ": " << to_string(plan.status);
+    if (plan.has_blocking_cell) {
+      detail << " (blocked at cell " << plan.blocking_cell;
+      if (plan.blocked_joint != 0xFF) detail << " along joint " << plan.blocked_joint + 1;
+      detail << ", nearest reached cell " << plan.closest_cell << ")";
+    }
+    status_.detail = detail.str();
+    outcome_ = TaskOutcome::kFailed;
+    return true;
+  }
+  if (stop_requested_) {
+    outcome_ = TaskOutcome::kStopped;
+    return true;
+  }
+  return false;
+}
 
 TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
                                   const std::function<void(const ModuleStatus&)>& status) {
   Parts& p = *parts_;
   const auto period_ns = static_cast<std::uint64_t>(config_.timing.period_ms * 1e6);
   const std::uint64_t start = monotonic_ns();
-  p.robot.set_time_ns(start);
+  begin(start);
   std::uint64_t deadline = start;
   std::uint64_t next_status = start;
-  std::uint64_t last_start = 0;
-  status_ = ModuleStatus{};
-  status_.goals = config_.task.goals_rad.size();
-  const auto goal_angles = [&](std::size_t index) {
-    JointAngles goal;
-    for (std::size_t j = 0; j < config_.task.goals_rad[index].size(); ++j) {
-      goal.rad[j] = config_.task.goals_rad[index][j];
-    }
-    return goal;
-  };
-  if (status_.goals > 0) (void)p.motion.move_to(goal_angles(0));
-  double planned[kMaxJoints] = {};
-  TaskOutcome outcome = TaskOutcome::kStopped;
   for (;;) {
     deadline += period_ns;
     // Until the next cycle: whenever a frame arrives, map work in slices (an update is applied
@@ -171,53 +276,9 @@ TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
     // from now, so that the cycles missed are not run back to back (the watchdog would call that
     // too early; the look-ahead has allowed for the late one through its window).
     if (now > deadline + period_ns / 2) deadline = now;
-    if (last_start != 0) {
-      const double period_ms = static_cast<double>(now - last_start) * 1e-6;
-      if (period_ms > status_.worst_period_ms) status_.worst_period_ms = period_ms;
-      if (now - last_start > 2 * period_ns) ++status_.overruns;
-    }
-    last_start = now;
-    if (now > p.robot.time_ns()) p.robot.step(static_cast<double>(now - p.robot.time_ns()) * 1e-9);
-    if (acknowledge_requested_.exchange(false)) p.cycle.acknowledge();
-    // The safety cycle first, on the deadline, with the velocities planned after the last one:
-    // the planner's time (a re-plan can take milliseconds) then never shifts the cycle's start,
-    // which the watchdog's window judges.
-    const CycleReport& report = p.cycle.run(planned, true);
-    const double work_ms = static_cast<double>(monotonic_ns() - report.start_ns) * 1e-6;
-    if (work_ms > status_.worst_cycle_ms) status_.worst_cycle_ms = work_ms;
-    const RobotJoints joints = p.robot.read();
-    p.motion.plan_velocity(joints, p.store.store().view(), p.store.store().version(), now, planned);
-    ++status_.cycles;
-    status_.elapsed_s = static_cast<double>(now - start) * 1e-9;
-    status_.cycle = &report;
-    status_.motion = &p.motion.progress();
-
-    const MotionStatus motion = p.motion.progress().status;
-    bool done = false;
-    if (motion == MotionStatus::kArrived && status_.goal < status_.goals) {
-      if (++status_.goal == status_.goals && config_.task.repeat) status_.goal = 0;
-      if (status_.goal < status_.goals) {
-        (void)p.motion.move_to(goal_angles(status_.goal));
-      } else {
-        outcome = TaskOutcome::kCompleted;
-        done = true;
-      }
-    } else if (motion == MotionStatus::kFailed) {
-      const PlanResult& plan = p.motion.progress().last_plan;
-      std::ostringstream detail;
-      detail << "goal " << status_.goal + 1 << ": " << to_string(plan.status);
-      if (plan.has_blocking_cell) {
-        detail << " (blocked at cell " << plan.blocking_cell;
-        if (plan.blocked_joint != 0xFF) detail << " along joint " << plan.blocked_joint + 1;
-        detail << ", nearest reached cell " << plan.closest_cell << ")";
-      }
-      status_.detail = detail.str();
-      outcome = TaskOutcome::kFailed;
-      done = true;
-    }
-    if (!done && stop_requested_) done = true;
+    bool done = cycle(now);
     if (!done && max_duration_s > 0.0 && status_.elapsed_s >= max_duration_s) {
-      outcome = TaskOutcome::kTimedOut;
+      outcome_ = TaskOutcome::kTimedOut;
       done = true;
     }
     if (status && (done || now >= next_status)) {
@@ -231,7 +292,7 @@ TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
   // Leave the robot held (a controlled stop, power kept); the coprocessor sees the joint stream
   // end and its own watchdog report it.
   p.robot.stop(StopCategory::kCategory2);
-  return outcome;
+  return outcome_;
 }
 
 std::string status_line(const ModuleStatus& status) {

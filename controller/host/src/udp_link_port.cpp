@@ -70,7 +70,9 @@ bool UdpLinkPort::send(const std::uint8_t* data, std::size_t size) noexcept {
   // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the sockets API takes sockaddr.
   const ssize_t sent =
       ::sendto(socket_, data, size, 0, reinterpret_cast<const sockaddr*>(&peer), sizeof peer);
-  return sent == static_cast<ssize_t>(size);
+  if (sent != static_cast<ssize_t>(size)) return false;
+  ++sent_;
+  return true;
 }
 
 std::size_t UdpLinkPort::receive(std::uint8_t* buffer, std::size_t capacity) noexcept {
@@ -87,6 +89,7 @@ std::size_t UdpLinkPort::receive(std::uint8_t* buffer, std::size_t capacity) noe
       ++dropped_foreign_;
       continue;
     }
+    ++received_;
     const auto size = static_cast<std::size_t>(received);
     return size > capacity ? capacity + 1 : size;
   }

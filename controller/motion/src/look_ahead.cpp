@@ -36,6 +36,8 @@ const char* to_string(LookAheadReason reason) noexcept {
       return "joints outside the grid";
     case LookAheadReason::kInvalidInput:
       return "invalid joints or map age";
+    case LookAheadReason::kSwitchedOff:
+      return "look-ahead switched off (test only)";
   }
   return "unknown";
 }

@@ -7,6 +7,7 @@
 #include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/cell_coverage_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
+#include "safecell/cli/closed_loop_validate_command.hpp"
 #include "safecell/cli/demo_command.hpp"
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
@@ -17,6 +18,7 @@
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/link/link_errors.hpp"
 #include "safecell/lut/lut_file.hpp"
+#include "scene_options.hpp"
 
 namespace safecell {
 namespace {
@@ -230,7 +232,10 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   CLI::App* validate_command = app.add_subcommand(
       "validate",
       "Run the sensing pipeline on random simulated scenes and compare the forbidden map with "
-      "the exact collisions (FCL); fails when a collision with a seen obstacle is not forbidden");
+      "the exact collisions (FCL); fails when a collision with a seen obstacle is not forbidden. "
+      "With --closed-loop: the whole system (pipeline, link, safecell-controller, robot) in "
+      "simulated time with people walking in; fails when the robot touches a person while "
+      "moving");
   validate_command->add_option("--cell", validate.cell_path,
                                "Cell file (YAML); without it the built-in default cell");
   validate_command->add_option("--scenes", validate.scenes, "Random scenes")
@@ -307,7 +312,7 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   validate_command
       ->add_option("--negative-control", validate.negative_control,
                    "Break the pipeline on purpose to show the check fails: none, empty-masks, "
-                   "dropped-strip or envelope-removal")
+                   "dropped-strip or envelope-removal; with --closed-loop: look-ahead-off")
       ->capture_default_str();
   validate_command
       ->add_option("--shard", validate.shard,
@@ -318,6 +323,38 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->capture_default_str()
       ->check(CLI::Range(0, 256));
   validate_command->add_flag("--json", validate.json, "Print one JSON object instead of text");
+  bool closed_loop = false;
+  ClosedLoopValidateOptions loop;
+  validate_command->add_flag("--closed-loop", closed_loop,
+                             "Validate the closed loop in simulated time (the options below)");
+  validate_command
+      ->add_option("--scenarios", loop.scenarios, "Closed loop: random scenarios (task + person)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--first", loop.first,
+                   "Closed loop: index of the first scenario (to run one of a run again)")
+      ->capture_default_str();
+  validate_command->add_option("--fps", loop.fps, "Closed loop: camera frames per second")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--latency", loop.latency_ms,
+                   "Closed loop: exposure to map at the controller, ms (below a frame period)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--max-seconds", loop.max_seconds,
+                   "Closed loop: a scenario ends after this long (simulated seconds)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--task-pool", loop.task_pool,
+                   "Closed loop: robot tasks the scenarios share (each run once without people)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--out", loop.out_dir,
+                   "Closed loop: folder for closed_loop.json and the last controller's log")
+      ->capture_default_str();
+  validate_command->add_option("--controller-program", loop.controller_program,
+                               "Closed loop: the safecell-controller program (default: found "
+                               "beside safecell or from $SAFECELL_CONTROLLER)");
   validate_command->require_subcommand(0, 1);
   ValidateMergeOptions merge;
   CLI::App* merge_command = validate_command->add_subcommand(
@@ -330,6 +367,21 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   validate_command->callback([&] {
     if (merge_command->parsed()) return;
     validate.lens_k1_set = lens_k1->count() > 0;
+    if (closed_loop) {
+      loop.cell_path = validate.cell_path;
+      loop.lut_cache = validate.lut_cache;
+      loop.seed = validate.seed;
+      loop.json = validate.json;
+      loop.look_ahead_off = validate.negative_control == "look-ahead-off";
+      action = [&] {
+        if (!loop.look_ahead_off && validate.negative_control != "none") {
+          bad_option("--negative-control", validate.negative_control,
+                     "none or look-ahead-off with --closed-loop");
+        }
+        exit_code = run_closed_loop_validate(loop, out, err);
+      };
+      return;
+    }
     action = [&] { exit_code = run_validate(validate, out, err); };
   });
 

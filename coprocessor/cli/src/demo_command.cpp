@@ -84,10 +84,10 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   // The person comes in once the robot has done a few moves alone (the productivity baseline)
   // and leaves with time to spare for moves after.
   const DemoWorld world(sensing.cell, sensing.grid, 0.3 * options.seconds);
-  ControllerSession session(sensing.cell, sensing.grid, sensing.pipeline,
-                            sensing.luts.set.fingerprint,
-                            demo_controller_setup(sensing.cell, sensing.grid, world),
-                            {program, out_dir, options.fps, sensing.fusion.sync_error_s, {}}, err);
+  ControllerSession session(
+      sensing.cell, sensing.grid, sensing.pipeline, sensing.luts.set.fingerprint,
+      demo_controller_setup(sensing.cell, sensing.grid, world),
+      real_time_session(program, out_dir, options.fps, sensing.fusion.sync_error_s), err);
   SensingService& service = session.service();
 
   const std::uint64_t start_ns = steady_now_ns();

@@ -3,31 +3,80 @@
 #include "safecell/closed_loop/controller_setup.hpp"
 
 #include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
 
 #include <boost/process/args.hpp>
 #include <boost/process/child.hpp>
 #include <boost/process/io.hpp>
+#include <boost/process/pipe.hpp>
 #include <stdexcept>
 #include <system_error>
 #include <thread>
 
 namespace safecell {
 
+// The pipes as plain descriptors, read and written with POSIX calls (Boost's pipe streams would
+// do as well, but their stream buffers flush from a destructor, which the analyzer refuses).
 struct ControllerProcess::Child {
+  boost::process::pipe commands;
+  boost::process::pipe answers;
+  std::string pending;  // read from `answers`, not yet a whole line
   boost::process::child process;
 };
 
 ControllerProcess::ControllerProcess(const std::filesystem::path& program,
                                      const std::vector<std::string>& args,
-                                     const std::filesystem::path& log_file) {
+                                     const std::filesystem::path& log_file,
+                                     ProcessChannel channel) {
+  namespace bp = boost::process;
   std::error_code error;
   std::filesystem::remove(log_file, error);  // the output of an earlier run would mislead
-  child_ = std::make_unique<Child>(Child{
-      boost::process::child(program.string(), boost::process::args(args),
-                            (boost::process::std_out & boost::process::std_err) > log_file.string(),
-                            boost::process::std_in.close(), error)});
+  child_ = std::make_unique<Child>();
+  if (channel == ProcessChannel::kCommandPipes) {
+    // A program that has died closes its pipe: writing to it must fail, not kill this process.
+    ::signal(SIGPIPE, SIG_IGN);
+    child_->process =
+        bp::child(program.string(), bp::args(args), bp::std_out > child_->answers,
+                  bp::std_err > log_file.string(), bp::std_in < child_->commands, error);
+    // Boost.Process has handed the program its ends and closed them here: the program's exit
+    // closes `answers` (read_line() then ends).
+  } else {
+    child_->process =
+        bp::child(program.string(), bp::args(args), (bp::std_out & bp::std_err) > log_file.string(),
+                  bp::std_in.close(), error);
+  }
   if (error) {
     throw ClosedLoopSetupError("could not start " + program.string() + ": " + error.message());
+  }
+}
+
+void ControllerProcess::write_line(const std::string& line) {
+  const std::string text = line + "\n";
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n =
+        ::write(child_->commands.native_sink(), text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;  // the program has gone: its answer will not come (read_line says so)
+    written += static_cast<std::size_t>(n);
+  }
+}
+
+std::optional<std::string> ControllerProcess::read_line() {
+  for (;;) {
+    const std::size_t newline = child_->pending.find('\n');
+    if (newline != std::string::npos) {
+      std::string line = child_->pending.substr(0, newline);
+      child_->pending.erase(0, newline + 1);
+      return line;
+    }
+    char chunk[4096];
+    const ssize_t n = ::read(child_->answers.native_source(), chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return std::nullopt;
+    child_->pending.append(chunk, static_cast<std::size_t>(n));
   }
 }
 

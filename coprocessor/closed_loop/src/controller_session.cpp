@@ -34,8 +34,10 @@ ControllerSession::ControllerSession(const CellModel& cell, const CspaceGrid& gr
   write_file_atomically(config_file, controller_config_yaml(grid, setup_));
   std::vector<std::string> args{"--config", config_file.string(), "--status-hz", "1"};
   args.insert(args.end(), settings.extra_args.begin(), settings.extra_args.end());
-  process_ = std::make_unique<ControllerProcess>(settings.program, args, log_file_);
+  process_ =
+      std::make_unique<ControllerProcess>(settings.program, args, log_file_, settings.channel);
   log << "controller: " << settings.program.string() << " (log " << log_file_.string() << ")\n";
+  if (settings.on_started) settings.on_started(*process_);
 
   CoprocessorLinkConfig link_config;
   link_config.cell_count = grid.cell_count();
@@ -45,7 +47,7 @@ ControllerSession::ControllerSession(const CellModel& cell, const CspaceGrid& gr
   link_config.control_cycle_us = microseconds(setup_.period_ms);
   link_config.watchdog_us = microseconds(setup_.watchdog_ms);
   link_config.max_data_age_us = microseconds(setup_.max_data_age_ms);
-  link_ = std::make_unique<CoprocessorLink>(link_config, transport_);
+  link_ = std::make_unique<CoprocessorLink>(link_config, transport_, 0, settings.clock);
   // The program needs a moment to start; a refusal, or the program gone, ends the wait.
   const auto give_up = std::chrono::steady_clock::now() + kStartUp;
   while (true) {
@@ -74,8 +76,19 @@ ControllerSession::ControllerSession(const CellModel& cell, const CspaceGrid& gr
 
 ControllerSession::~ControllerSession() = default;
 
-std::string ControllerSession::log_tail() const {
-  std::ifstream in(log_file_);
+ControllerSessionSettings real_time_session(const std::filesystem::path& program,
+                                            const std::filesystem::path& folder, double fps,
+                                            double sync_error_s) {
+  ControllerSessionSettings settings;
+  settings.program = program;
+  settings.folder = folder;
+  settings.fps = fps;
+  settings.sync_error_s = sync_error_s;
+  return settings;
+}
+
+std::string controller_log_tail(const std::filesystem::path& log_file) {
+  std::ifstream in(log_file);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   std::string text;
@@ -85,6 +98,8 @@ std::string ControllerSession::log_tail() const {
   }
   return text.empty() ? " (none)" : text;
 }
+
+std::string ControllerSession::log_tail() const { return controller_log_tail(log_file_); }
 
 std::optional<int> ControllerSession::finish(const std::string& why) {
   if (process_->running()) {

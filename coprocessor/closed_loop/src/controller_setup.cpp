@@ -39,6 +39,16 @@ std::vector<SimulatedJointLimits> comfortable_joint_limits(const RobotModel& rob
   return limits;
 }
 
+std::vector<double> inside_grid(const CspaceGrid& grid, std::vector<double> q) {
+  q.resize(grid.joint_count(), 0.0);
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const JointSpec& joint = grid.joint(j);
+    const double margin = 0.01 * (joint.hi_rad - joint.lo_rad);
+    q[j] = std::clamp(q[j], joint.lo_rad + margin, joint.hi_rad - margin);
+  }
+  return q;
+}
+
 std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup& setup) {
   if (setup.joints.size() != grid.joint_count() || setup.start_rad.size() != grid.joint_count()) {
     throw std::invalid_argument("controller setup: " + std::to_string(setup.joints.size()) +
@@ -71,12 +81,14 @@ std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup
        << "\n  max_clock_lead_ms: " << exact(setup.max_clock_lead_ms) << "\n"
        << "safety:\n  min_healthy_cameras: " << setup.min_healthy_cameras
        << "\n  max_look_ahead_cells: " << setup.max_look_ahead_cells << "\n"
+       << (setup.test_only_look_ahead_off ? "  test_only_look_ahead_off: true\n" : "")
        << "link:\n  listen: 127.0.0.1:" << setup.listen_port
        << "\n  coprocessor: 127.0.0.1:" << setup.coprocessor_port
        << "\n  lut_fingerprint: " << setup.lut_fingerprint << "\n"
        << "task:\n  goals_rad:" << (setup.goals_rad.empty() ? " []\n" : "\n");
   for (const std::vector<double>& goal : setup.goals_rad) yaml << "    - " << list(goal) << "\n";
   yaml << "  repeat: " << (setup.repeat ? "true" : "false") << "\n";
+  yaml << "  motion: " << (setup.program_motion ? "program" : "gross_motion") << "\n";
   return yaml.str();
 }
 

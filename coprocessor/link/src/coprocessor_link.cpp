@@ -69,7 +69,10 @@ void CoprocessorLink::send_message(const v1::Message& message, std::uint64_t cap
 }
 
 void CoprocessorLink::open(std::chrono::milliseconds timeout) {
-  const std::uint64_t deadline = now() + static_cast<std::uint64_t>(timeout.count()) * 1'000'000;
+  // The waits are on the steady clock: they wait for the real transport, also when `now` is a
+  // simulated clock that only moves when its driver says (the closed-loop validation).
+  using Steady = std::chrono::steady_clock;
+  const Steady::time_point deadline = Steady::now() + timeout;
   v1::Message hello;
   v1::Handshake& handshake = *hello.mutable_handshake();
   handshake.set_protocol_version(kProtocolVersion);
@@ -84,24 +87,26 @@ void CoprocessorLink::open(std::chrono::milliseconds timeout) {
   handshake.set_max_data_age_us(config_.max_data_age_us);
   handshake.set_keyframe_after_cycles(config_.publisher.keyframe_after_cycles);
   while (!accepted_) {
-    if (now() > deadline) {
+    if (Steady::now() > deadline) {
       throw LinkSetupError("link: the controller (id " + std::to_string(config_.controller_id) +
                            ") did not answer the handshake within " +
                            std::to_string(timeout.count()) + " ms");
     }
     send_message(hello, 0, kFrameFlagHandshake);
-    const std::uint64_t resend_at = now() + 200'000'000;
-    while (!accepted_ && !refused_because_ && now() < resend_at) {
+    const Steady::time_point resend_at = Steady::now() + std::chrono::milliseconds(200);
+    while (!accepted_ && !refused_because_ && Steady::now() < resend_at) {
       poll(std::chrono::milliseconds(20));
     }
     if (refused_because_) throw LinkSetupError(*refused_because_);
   }
   // The clock offset, before any map: map times are the controller's.
-  for (std::uint32_t echo = 0; echo < config_.echo_samples && now() < deadline; ++echo) {
+  for (std::uint32_t echo = 0; echo < config_.echo_samples && Steady::now() < deadline; ++echo) {
     const std::size_t before = clock_sync_.samples();
     send_clock_echo();
-    const std::uint64_t give_up = now() + 100'000'000;
-    while (clock_sync_.samples() == before && now() < give_up) poll(std::chrono::milliseconds(5));
+    const Steady::time_point give_up = Steady::now() + std::chrono::milliseconds(100);
+    while (clock_sync_.samples() == before && Steady::now() < give_up) {
+      poll(std::chrono::milliseconds(5));
+    }
   }
   if (!clock_sync_.offset()) {
     throw LinkSetupError("link: the controller accepted the session but answered no clock echo");

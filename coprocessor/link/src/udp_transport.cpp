@@ -23,6 +23,8 @@ struct UdpTransport::State {
   asio::io_context io;
   udp::socket socket{io};
   udp::endpoint peer;
+  std::uint64_t sent = 0;
+  std::uint64_t received = 0;  // from the peer
 };
 
 namespace {
@@ -58,12 +60,17 @@ UdpTransport::~UdpTransport() = default;
 
 unsigned short UdpTransport::local_port() const { return state_->socket.local_endpoint().port(); }
 
+std::uint64_t UdpTransport::datagrams_sent() const { return state_->sent; }
+std::uint64_t UdpTransport::datagrams_received() const { return state_->received; }
+
 void UdpTransport::set_peer(const UdpEndpoint& peer) { state_->peer = endpoint_of(peer, "peer"); }
 
 bool UdpTransport::send(std::span<const std::uint8_t> datagram) {
   boost::system::error_code error;
   state_->socket.send_to(asio::buffer(datagram.data(), datagram.size()), state_->peer, 0, error);
-  return !error;
+  if (error) return false;
+  ++state_->sent;
+  return true;
 }
 
 std::optional<std::size_t> UdpTransport::receive(std::span<std::uint8_t> buffer,
@@ -87,6 +94,7 @@ std::optional<std::size_t> UdpTransport::receive(std::span<std::uint8_t> buffer,
       if (error) return std::nullopt;
       if (sender == state_->peer) received = size;
     }
+    ++state_->received;
     return received;
   }
   const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -115,6 +123,7 @@ std::optional<std::size_t> UdpTransport::receive(std::span<std::uint8_t> buffer,
     if (error) return std::nullopt;
     if (sender == state_->peer) received = size;  // from anyone else: dropped, keep waiting
   }
+  ++state_->received;
   return received;
 }
 

@@ -38,6 +38,10 @@ struct SafetyCycleConfig {
   std::uint32_t min_healthy_cameras = 1;  // the fusion's camera threshold
   StopCategory look_ahead_stop = StopCategory::kCategory2;
   StopCategory fault_stop = StopCategory::kCategory1;
+  // The closed-loop validation's negative control, never a product setting: the look-ahead is
+  // not run and the planned speed goes to the robot, so that the validation can show that its
+  // ground truth finds the contacts the look-ahead prevents. Faults still stop the robot.
+  bool look_ahead_switched_off = false;
 };
 
 enum class CycleState : std::uint8_t { kWaiting, kMoving, kSlowed, kStopped, kFault };

@@ -61,6 +61,7 @@ enum class LookAheadReason : std::uint8_t {
   kCurrentCellForbidden,
   kOutsideGrid,   // the joints lie outside the grid's ranges
   kInvalidInput,  // NaN or infinite joints, a negative or infinite map age
+  kSwitchedOff,   // not checked: the closed-loop validation's negative control (never in use)
 };
 
 const char* to_string(LookAheadReason reason) noexcept;

@@ -4,6 +4,7 @@
 // does not exit in time. The destructor stops a process still running.
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -12,16 +13,27 @@
 
 namespace safecell {
 
+// How the program's standard streams are connected.
+enum class ProcessChannel : std::uint8_t {
+  kLogOnly,       // stdout and stderr into the log file, stdin closed
+  kCommandPipes,  // stdin and stdout are pipes to this process (lockstep), stderr the log file
+};
+
 class ControllerProcess {
  public:
   // Throws ClosedLoopSetupError naming the program when it cannot be started.
   ControllerProcess(const std::filesystem::path& program, const std::vector<std::string>& args,
-                    const std::filesystem::path& log_file);
+                    const std::filesystem::path& log_file,
+                    ProcessChannel channel = ProcessChannel::kLogOnly);
   ~ControllerProcess();
   ControllerProcess(const ControllerProcess&) = delete;
   ControllerProcess& operator=(const ControllerProcess&) = delete;
 
   [[nodiscard]] bool running();
+  // kCommandPipes only: a line to the program's stdin (flushed), the next line of its stdout
+  // (blocks; nullopt once it has closed it).
+  void write_line(const std::string& line);
+  std::optional<std::string> read_line();
   // The operator's acknowledgement of a latched fault (SIGUSR1 to safecell-controller).
   void acknowledge_fault();
   // SIGTERM, then waits up to `grace` for the exit; kills it after that. Returns the exit code

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -28,7 +29,20 @@ struct ControllerSessionSettings {
   double fps = 30.0;              // the map rate the handshake announces
   double sync_error_s = 0.002;    // the pipeline's removal allowance for timing (FusionSettings)
   std::vector<std::string> extra_args;
+  ProcessChannel channel = ProcessChannel::kLogOnly;  // kCommandPipes with --lockstep
+  CoprocessorLink::Clock clock;                       // the link's; the steady clock if empty
+  // Called once the program has started, before the link opens (a lockstep driver reads the
+  // program's first line here and sets its clock).
+  std::function<void(ControllerProcess&)> on_started;
 };
+
+// The settings of a session in real time (the program's output into its log, the steady clock).
+ControllerSessionSettings real_time_session(const std::filesystem::path& program,
+                                            const std::filesystem::path& folder, double fps,
+                                            double sync_error_s);
+
+// The last lines of a controller's log file, indented, for error messages (" (none)" if empty).
+std::string controller_log_tail(const std::filesystem::path& log_file);
 
 class ControllerSession {
  public:
@@ -46,6 +60,7 @@ class ControllerSession {
   [[nodiscard]] ControllerProcess& process() { return *process_; }
   [[nodiscard]] const ControllerSetup& setup() const { return setup_; }
   [[nodiscard]] const std::filesystem::path& log_file() const { return log_file_; }
+  [[nodiscard]] const UdpTransport& transport() const { return transport_; }
   // The last lines of the controller's output, for error messages.
   [[nodiscard]] std::string log_tail() const;
 

@@ -47,7 +47,16 @@ struct ControllerSetup {
   std::uint64_t lut_fingerprint = 0;
   std::vector<std::vector<double>> goals_rad;
   bool repeat = true;
+  // The moves as a robot program's (task.motion: program): planned without the map, the
+  // look-ahead alone slows and stops them. Otherwise the safe gross-motion service.
+  bool program_motion = false;
+  // The closed-loop validation's negative control only: the controller does not slow or stop
+  // the robot for people (safety.test_only_look_ahead_off).
+  bool test_only_look_ahead_off = false;
 };
+
+// A configuration inside the grid: each joint clamped to 1 % of its range inside the range.
+std::vector<double> inside_grid(const CspaceGrid& grid, std::vector<double> q);
 
 // The simulated robot's limits for a cell's robot: the URDF's speed limits, held to a pace people
 // near the robot find comfortable (1 rad/s for the arm's first three joints, 2 rad/s for the

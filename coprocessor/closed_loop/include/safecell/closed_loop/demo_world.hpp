@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
+#include "safecell/closed_loop/person_visit.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/sim/human_walker.hpp"
 
 namespace safecell {
 
@@ -22,17 +22,16 @@ class DemoWorld {
   [[nodiscard]] const std::vector<std::vector<double>>& goals_rad() const { return goals_rad_; }
 
   // The person at time_s; nullopt while they are outside the cell.
-  [[nodiscard]] std::optional<HumanPose> person_at(double time_s) const;
-  [[nodiscard]] double person_enters_s() const { return enters_s_; }
-  [[nodiscard]] double person_leaves_s() const;
+  [[nodiscard]] std::optional<HumanPose> person_at(double time_s) const {
+    return person_.at(time_s);
+  }
+  [[nodiscard]] double person_enters_s() const { return person_.enters_s(); }
+  [[nodiscard]] double person_leaves_s() const { return person_.leaves_s(); }
 
  private:
   std::vector<double> start_rad_;
   std::vector<std::vector<double>> goals_rad_;
-  double enters_s_;
-  HumanWalker approach_;
-  HumanWalker leave_;
-  double stand_s_;
+  PersonVisit person_;
 };
 
 }  // namespace safecell

@@ -1,9 +1,9 @@
 #pragma once
-// The simulated cell's cameras in real time, for a closed loop with a controller process: a frame
-// set is exposed at the moment acquire() is called (the coprocessor's steady clock), showing the
-// scene of that moment: the robot where the controller's joint stream puts it, and the people
-// where the scenario has them. It keeps the last scene and the renderer's object-id images, for
-// the ground truth.
+// The simulated cell's cameras, for a closed loop with a controller process: a frame set is
+// exposed at the moment acquire() is called (the coprocessor's steady clock, or the clock given),
+// showing the scene of that moment: the robot where the controller's joint stream (or the
+// simulation's truth) puts it, and the people where the scenario has them. It keeps the last scene
+// and the renderer's object-id images, for the ground truth.
 
 #include <cstdint>
 #include <functional>
@@ -20,7 +20,11 @@ class LiveSimulatedCameras final : public FrameSetSource {
   // The scene at an exposure (steady-clock nanoseconds).
   using SceneAt = std::function<SimScene(std::uint64_t exposure_ns)>;
 
-  LiveSimulatedCameras(SimulatedCell& cell, SceneAt scene_at);
+  // The exposure's time (nanoseconds); the steady clock's now when empty. The closed-loop
+  // validation passes its simulated clock.
+  using ExposureClock = std::function<std::uint64_t()>;
+
+  LiveSimulatedCameras(SimulatedCell& cell, SceneAt scene_at, ExposureClock clock = {});
 
   FrameSet acquire() override;
 
@@ -31,6 +35,7 @@ class LiveSimulatedCameras final : public FrameSetSource {
  private:
   SimulatedCell& cell_;
   SceneAt scene_at_;
+  ExposureClock clock_;
   std::vector<std::string> cameras_;  // the cell's camera names, in order
   std::uint64_t sets_ = 0;
   SimScene scene_;

@@ -4,6 +4,7 @@
 // watchdog). Binds a local address, talks to one peer; datagrams from anyone else are dropped
 // before the safety layer sees them (it would refuse them anyway).
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -29,6 +30,9 @@ class UdpTransport final : public DatagramTransport {
   // The port bound (useful with port 0).
   unsigned short local_port() const;
   void set_peer(const UdpEndpoint& peer);
+  // Datagrams sent, and received from the peer (a driver in simulated time waits on these).
+  std::uint64_t datagrams_sent() const;
+  std::uint64_t datagrams_received() const;
 
  private:
   struct State;

@@ -50,6 +50,9 @@ struct ControllerSafety {
   std::uint32_t max_look_ahead_cells = 24;
   StopCategory look_ahead_stop = StopCategory::kCategory2;
   StopCategory fault_stop = StopCategory::kCategory1;
+  // safety.test_only_look_ahead_off: the closed-loop validation's negative control (the robot
+  // is not slowed or stopped for people). Never in a product file; the program warns loudly.
+  bool test_only_look_ahead_off = false;
 };
 
 struct ControllerLinkSettings {
@@ -63,9 +66,17 @@ struct ControllerLinkSettings {
   std::uint32_t map_work_per_slice = ControllerLinkConfig{}.map_work_per_poll;
 };
 
+// How the task's moves are made. Both run under the safety cycle's look-ahead.
+enum class TaskMotion : std::uint8_t {
+  kGrossMotion,  // the safe gross-motion service: paths of free cells, re-planned around people
+  kProgram,      // as a robot program's moves: planned once without the map (an empty one), so
+                 // that the look-ahead alone slows and stops them for people
+};
+
 struct ControllerTask {
   std::vector<std::vector<double>> goals_rad;
   bool repeat = false;
+  TaskMotion motion = TaskMotion::kGrossMotion;
 };
 
 struct ControllerConfig {

@@ -17,6 +17,7 @@
 
 #include "safecell/controller/gross_motion.hpp"
 #include "safecell/controller/host/controller_config.hpp"
+#include "safecell/controller/robot_port.hpp"
 #include "safecell/controller/safety_cycle.hpp"
 
 namespace safecell {
@@ -43,17 +44,22 @@ struct ModuleStatus {
   std::string detail;           // why the task failed, when it did
 };
 
+// The module's time: the monotonic clock (a real cell), or a clock that only moves when told
+// (the closed-loop validation in simulated time: lockstep_runner.hpp).
+enum class ModuleTime : std::uint8_t { kMonotonic, kStepped };
+
 class ControllerModule {
  public:
   // Throws ControllerConfigError (configuration the core refuses) or std::runtime_error (the
   // socket). Allocates everything the core uses here; nothing afterwards.
-  explicit ControllerModule(const ControllerConfig& config);
+  explicit ControllerModule(const ControllerConfig& config,
+                            ModuleTime time = ModuleTime::kMonotonic);
   ~ControllerModule();
   ControllerModule(const ControllerModule&) = delete;
   ControllerModule& operator=(const ControllerModule&) = delete;
 
-  // Runs until the task ends, request_stop(), or max_duration_s (0: no limit). status() is called
-  // every status_period_s with the latest state.
+  // Runs in real time until the task ends, request_stop(), or max_duration_s (0: no limit).
+  // status() is called every status_period_s with the latest state. Monotonic time only.
   TaskOutcome run(double max_duration_s, double status_period_s,
                   const std::function<void(const ModuleStatus&)>& status);
 
@@ -62,11 +68,29 @@ class ControllerModule {
   std::uint16_t listen_port() const;
   const ModuleStatus& status() const noexcept { return status_; }
 
+  // The steps run() takes, for a driver that keeps its own time (ModuleTime::kStepped):
+  // begin() once at the start time, then cycle() at each cycle's time (the robot is advanced to
+  // it first), and service_link() between cycles. cycle() returns true once the run has ended
+  // (outcome() says how). now_ns() is the module's clock; set_time_ns() moves a stepped clock.
+  void begin(std::uint64_t start_ns);
+  bool cycle(std::uint64_t now_ns);
+  void service_link(std::uint64_t until_ns);
+  [[nodiscard]] TaskOutcome outcome() const noexcept { return outcome_; }
+  [[nodiscard]] std::uint64_t now_ns() const noexcept;
+  void set_time_ns(std::uint64_t now_ns) noexcept;
+  [[nodiscard]] const RobotJoints& robot_joints() const noexcept { return robot_joints_; }
+  // The link's socket (to wait on it with other descriptors) and its datagram counts.
+  [[nodiscard]] int socket_fd() const noexcept;
+  [[nodiscard]] std::uint64_t datagrams_received() const noexcept;
+  [[nodiscard]] std::uint64_t datagrams_sent() const noexcept;
+
  private:
   struct Parts;
   ControllerConfig config_;
   std::unique_ptr<Parts> parts_;
   ModuleStatus status_;
+  TaskOutcome outcome_ = TaskOutcome::kStopped;
+  RobotJoints robot_joints_{};  // the robot after the last cycle's step, before its command
   std::atomic<bool> stop_requested_{false};
   std::atomic<bool> acknowledge_requested_{false};
 };

@@ -35,12 +35,18 @@ class UdpLinkPort final : public LinkPort {
   bool wait_readable(int timeout_us) const noexcept;
 
   std::uint64_t dropped_foreign() const noexcept { return dropped_foreign_; }
+  // Datagrams sent, and received from the peer (a driver in simulated time waits on these).
+  std::uint64_t datagrams_sent() const noexcept { return sent_; }
+  std::uint64_t datagrams_received() const noexcept { return received_; }
+  int socket_fd() const noexcept { return socket_; }
 
  private:
   int socket_ = -1;
   std::uint32_t peer_ip_ = 0;    // network byte order
   std::uint16_t peer_port_ = 0;  // network byte order
   std::uint64_t dropped_foreign_ = 0;
+  std::uint64_t sent_ = 0;
+  std::uint64_t received_ = 0;
 };
 
 }  // namespace safecell
