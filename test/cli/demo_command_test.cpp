@@ -1,10 +1,12 @@
 // `safecell demo`: the closed loop of two processes on loopback UDP, in real time, on the coarse
 // cell. The report must be whole (every picture index.html names exists), the controller must
 // have run the real protocol (its joint stream arrived, carrying the maps it applied), and the
-// ground truth's figures must be the safe ones.
+// ground truth's figures must be the safe ones. index.html is loaded in headless Chromium: every
+// picture must load (and one taken away must be named).
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -38,6 +40,54 @@ std::vector<std::string> attribute_values(const std::string& page, const std::st
     if (end != std::string::npos) values.push_back(page.substr(begin, end - begin));
   }
   return values;
+}
+
+// The page as headless Chromium renders it once loaded (its DOM), or "" without Chromium.
+std::string rendered_in_chromium(const fs::path& page) {
+#ifdef SAFECELL_CHROMIUM
+  const std::string command = std::string("\"") + SAFECELL_CHROMIUM +
+                              "\" --headless --no-sandbox --disable-gpu "
+                              "--allow-file-access-from-files --virtual-time-budget=10000 "
+                              "--dump-dom \"file://" +
+                              fs::absolute(page).string() + "\" 2>/dev/null";
+  std::string dom;
+  if (FILE* pipe = ::popen(command.c_str(), "r")) {
+    char chunk[4096];
+    for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, pipe)) > 0;) dom.append(chunk, n);
+    (void)::pclose(pipe);
+  }
+  return dom;
+#else
+  (void)page;
+  return "";
+#endif
+}
+
+// What the page's own script found: "N of M" pictures loaded.
+std::string pictures_loaded(const std::string& dom) {
+  const std::vector<std::string> values = attribute_values(dom, "data-pictures-loaded=\"");
+  return values.empty() ? "(not marked)" : values.front();
+}
+
+// index.html in a browser: every picture loads. The negative control: the same folder with one
+// picture taken away must be marked, and the page must name it.
+void expect_pictures_load_in_chromium(const fs::path& report, const fs::path& scratch,
+                                      std::size_t pictures) {
+#ifndef SAFECELL_CHROMIUM
+  GTEST_SKIP() << "Chromium not found at configure time (.ci/install-deps installs it)";
+#endif
+  const std::string dom = rendered_in_chromium(report / "index.html");
+  const std::string all = std::to_string(pictures) + " of " + std::to_string(pictures);
+  EXPECT_EQ(pictures_loaded(dom), all) << dom.substr(0, 2000);
+  const fs::path copy = scratch / "report-without-a-picture";
+  fs::copy(report, copy, fs::copy_options::recursive);
+  const std::string first = attribute_values(read_text(copy / "index.html"), "<img src=\"").front();
+  fs::remove(copy / first);
+  const std::string broken = rendered_in_chromium(copy / "index.html");
+  EXPECT_EQ(pictures_loaded(broken),
+            std::to_string(pictures - 1) + " of " + std::to_string(pictures));
+  EXPECT_NE(broken.find("Pictures that did not load: " + first), std::string::npos)
+      << broken.substr(0, 2000);
 }
 
 TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
@@ -76,6 +126,7 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
   const std::vector<std::string> images = attribute_values(page, "<img src=\"");
   for (const std::string& image : images) EXPECT_TRUE(fs::exists(out / image)) << image;
   EXPECT_GE(images.size(), 4U);
+  expect_pictures_load_in_chromium(out, scratch.path(), images.size());
   // The film of the run, where this OpenCV can write one, is there and not empty.
   for (const std::string& film : attribute_values(page, "<video src=\"")) {
     EXPECT_GT(fs::file_size(out / film), 1000U) << film;

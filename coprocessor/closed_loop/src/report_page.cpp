@@ -40,8 +40,9 @@ std::string report_page_html(const ReportPage& page) {
       "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ccc}\n"
       "</style>\n</head>\n<body>\n<h1>" +
       escaped(page.title) + "</h1>\n<p class=\"verdict " + (page.passed ? "pass" : "fail") + "\">" +
-      escaped(page.verdict) + "</p>\n<p>" + escaped(page.story) +
-      "</p>\n<h2>Figures</h2>\n<table>\n";
+      escaped(page.verdict) +
+      "</p>\n<p id=\"missing-pictures\" class=\"verdict fail\" hidden></p>\n<p>" +
+      escaped(page.story) + "</p>\n<h2>Figures</h2>\n<table>\n";
   for (const auto& [name, value] : page.figures) {
     html += "<tr><td>" + escaped(name) + "</td><td>" + escaped(value) + "</td></tr>\n";
   }
@@ -56,6 +57,26 @@ std::string report_page_html(const ReportPage& page) {
     html += "<figure><img src=\"" + escaped(picture.path) + "\" alt=\"" + escaped(picture.caption) +
             "\"><figcaption>" + escaped(picture.caption) + "</figcaption></figure>\n";
   }
+  // Once the page has loaded: how many pictures did (an attribute a headless browser check reads),
+  // and a red line naming those that did not (a folder copied without them).
+  html +=
+      "<script>\n"
+      "window.addEventListener('load', function () {\n"
+      "  var images = document.images, missing = [];\n"
+      "  for (var i = 0; i < images.length; i++) {\n"
+      "    if (!images[i].complete || images[i].naturalWidth === 0) {\n"
+      "      missing.push(images[i].getAttribute('src'));\n"
+      "    }\n"
+      "  }\n"
+      "  document.documentElement.setAttribute('data-pictures-loaded',\n"
+      "      (images.length - missing.length) + ' of ' + images.length);\n"
+      "  if (missing.length > 0) {\n"
+      "    var line = document.getElementById('missing-pictures');\n"
+      "    line.textContent = 'Pictures that did not load: ' + missing.join(', ');\n"
+      "    line.hidden = false;\n"
+      "  }\n"
+      "});\n"
+      "</script>\n";
   html += "</body>\n</html>\n";
   return html;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The report folder's index.html: one page with the verdict, the figures and the pictures, so a
 // person who opens the folder sees what happened without reading code. Paths are relative to the
-// folder; text is escaped.
+// folder; text is escaped. Once loaded, the page marks how many pictures loaded
+// (<html data-pictures-loaded="N of M">) and names any that did not in a red line.
 
 #include <string>
 #include <utility>
