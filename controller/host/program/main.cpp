@@ -88,6 +88,12 @@ int main(int argc, char** argv) {
   try {
     const safecell::ControllerConfig config = safecell::load_controller_config(config_path);
     std::ostream& log = lockstep ? std::cerr : std::cout;
+    if (config.safety.test_only_look_ahead_off && !lockstep) {
+      std::cerr << "safecell-controller: " << config.source
+                << ": safety.test_only_look_ahead_off is only allowed with --lockstep (the "
+                   "closed-loop validation in simulated time), never on a robot in real time\n";
+      return 2;
+    }
     if (config.safety.test_only_look_ahead_off) {
       log << "safecell-controller: WARNING: safety.test_only_look_ahead_off is set: the robot is "
              "NOT slowed or stopped for people. A test setting (the validation's negative "
