@@ -34,6 +34,7 @@ run() {  # run NAME ARGS...: one JSON report (exit 1, contacts while moving, is 
 }
 
 : >"$out/closed-loop-commands.tsv"
+printf '%s\t%s\n' "$(date -u +%Y-%m-%d)" "$(git rev-parse --short HEAD)" >"$out/closed-loop-run.tsv"
 run closed-loop-1 --first 0 --scenarios "$half" &
 first=$!
 run closed-loop-2 --first "$half" --scenarios "$(( scenarios - half ))"

@@ -229,6 +229,8 @@ def closed_loop_section():
             name, command, elapsed = line.rstrip("\n").split("\t")
             loop_commands[name] = command
             loop_seconds[name] = int(elapsed)
+    with open(os.path.join(folder, "closed-loop-run.tsv")) as tsv:
+        run_date, run_commit = tsv.readline().rstrip("\n").split("\t")
     runs = [report(name) for name in shards]
     control = report("closed-loop-control")
 
@@ -247,7 +249,8 @@ def closed_loop_section():
                   for r in runs)
     w("## Closed loop: the whole system in simulated time")
     w("")
-    w("`safecell validate --closed-loop` runs the coprocessor's pipeline on rendered frames, the "
+    w(f"Run by `bash docs/closed_loop_validation.sh` on {run_date} at commit `{run_commit}`. "
+      "`safecell validate --closed-loop` runs the coprocessor's pipeline on rendered frames, the "
       "link over loopback UDP in the real protocol, and `safecell-controller --lockstep` as its own "
       "process driving its simulated robot, in simulated time (the controller's clock moves only "
       "when the validation says). A frame set every 1/30 s; its map reaches the controller 20 ms "
@@ -283,6 +286,19 @@ def closed_loop_section():
          f"{total('simulated_s'):,.0f} s / {n(total('controller_cycles'))}"],
     ]))
     w("")
+    touched = [row for r in runs for row in r["per_scenario"] if row["contacts_while_moving"] > 0]
+    if touched:
+        w(f"**{len(touched)} scenarios had contacts while moving**; each runs again alone, with "
+          "every controller cycle written out (`--trace`), with the command given. What they are "
+          "and what follows: `docs/closed_loop_findings.md`.")
+        w("")
+        w(table(["scenario", "person", "speed m/s", "robot", "samples in contact while moving",
+                 "again alone"],
+                [[str(row["index"]), row["kind"], f"{row['person_speed_m_s']:.2f}", row["motion"],
+                  n(row["contacts_while_moving"]),
+                  f"`safecell validate --closed-loop --seed {runs[0]['seed']} --first "
+                  f"{row['index']} --scenarios 1 --trace`"] for row in touched]))
+        w("")
     kinds = sorted(set(k for r in runs for k in r["by_kind"]))
     rows = []
     for kind in kinds:
@@ -303,7 +319,11 @@ def closed_loop_section():
       "switched off by the test-only `safety.test_only_look_ahead_off`, on the first "
       f"{n(c['scenarios'])} scenarios of the same run): {n(c['contacts_while_moving'])} robot "
       f"samples in contact while moving, in {n(c['scenarios_with_contact_while_moving'])} "
-      "scenarios. The ground truth finds contacts when the protection is gone; with it, none.")
+      "scenarios; the same scenarios with the look-ahead: "
+      f"{n(sum(row['contacts_while_moving'] for r in runs for row in r['per_scenario'] if row['index'] < c['scenarios']))}. "
+      "Without the look-ahead, the robot program's moves run into people; the gross-motion "
+      "service's moves are still re-planned around the people the map shows, which is why its "
+      "rows stay lower.")
     per_kind = control["by_kind"]
     w("")
     w(table(["person, robot (look-ahead off)", "scenarios", "contacts while moving"],

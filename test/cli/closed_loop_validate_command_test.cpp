@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -52,7 +53,7 @@ TEST(ClosedLoopValidate, NoContactWhileMovingAndTheNegativeControlFindsThem) {
   const test::ScratchFolder scratch("safecell-closed-loop");
   const auto cell = test::write_coarse_cell(scratch.path());
 
-  const std::vector<std::string> args = closed_loop_args(scratch, cell);
+  const std::vector<std::string> args = closed_loop_args(scratch, cell, {"--trace"});
   const auto run = test::safecell_cli(args);
   ASSERT_EQ(run.exit_code, 0) << failing_input(args) << "\n" << run.err << run.out;
   const auto report = nlohmann::json::parse(run.out);
@@ -71,6 +72,15 @@ TEST(ClosedLoopValidate, NoContactWhileMovingAndTheNegativeControlFindsThem) {
   EXPECT_GE(totals["tasks_completed"].get<int>(), 1);
   EXPECT_EQ(report["per_scenario"].size(), 4U);
   EXPECT_TRUE(std::filesystem::exists(scratch.path() / "out" / "closed_loop.json"));
+  // --trace: every controller cycle of each scenario, with the person and the FCL distance.
+  std::ifstream trace(scratch.path() / "out" / "scenario-0.csv");
+  std::string header;
+  std::getline(trace, header);
+  EXPECT_EQ(header.rfind("time_s,state,speed_scale,q1,", 0), 0U) << header;
+  EXPECT_NE(header.find(",person_x_m,person_y_m,distance_m"), std::string::npos) << header;
+  std::size_t cycles = 0;
+  for (std::string line; std::getline(trace, line);) ++cycles;
+  EXPECT_GT(cycles, 500U);
 
   const std::vector<std::string> control =
       closed_loop_args(scratch, cell, {"--negative-control", "look-ahead-off"});

@@ -352,6 +352,9 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
       ->add_option("--out", loop.out_dir,
                    "Closed loop: folder for closed_loop.json and the last controller's log")
       ->capture_default_str();
+  validate_command->add_flag("--trace", loop.trace,
+                             "Closed loop: every controller cycle of each scenario as a CSV in "
+                             "--out (time, state, joints, the person, the distance)");
   validate_command->add_option("--controller-program", loop.controller_program,
                                "Closed loop: the safecell-controller program (default: found "
                                "beside safecell or from $SAFECELL_CONTROLLER)");

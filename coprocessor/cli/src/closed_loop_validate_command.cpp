@@ -248,6 +248,9 @@ int run_closed_loop_validate(const ClosedLoopValidateOptions& options, std::ostr
   for (ScenarioRow& row : rows) {
     progress.update("scenarios with people",
                     static_cast<double>(done++) / static_cast<double>(work));
+    if (options.trace) {
+      settings.trace_file = out_dir / ("scenario-" + std::to_string(row.scenario.index) + ".csv");
+    }
     row.result = run_lockstep_scenario(parts, settings, row.scenario.task, row.scenario.person);
     row.baseline = &baselines.at(row.scenario.task.index);
   }

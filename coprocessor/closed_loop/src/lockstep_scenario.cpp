@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <ostream>
+#include <sstream>
 
 #include "safecell/closed_loop/controller_session.hpp"
 #include "safecell/closed_loop/live_simulated_cameras.hpp"
 #include "safecell/closed_loop/lockstep_controller.hpp"
+#include "safecell/files/atomic_write.hpp"
 
 namespace safecell {
 namespace {
@@ -161,6 +163,28 @@ ScenarioResult run_lockstep_scenario(LockstepParts& parts, const LockstepSetting
   result.contacts = check_contacts(*parts.cell.robot, record, [&](double time_s) {
     return visit ? visit->at(time_s) : std::nullopt;
   });
+  if (!settings.trace_file.empty()) {
+    std::ostringstream csv;
+    csv.precision(6);
+    csv << "time_s,state,speed_scale";
+    for (std::size_t j = 0; j < parts.grid.joint_count(); ++j) csv << ",q" << j + 1;
+    for (std::size_t j = 0; j < parts.grid.joint_count(); ++j) csv << ",dq" << j + 1;
+    csv << ",person_x_m,person_y_m,distance_m\n";
+    for (std::size_t i = 0; i < record.joints.size(); ++i) {
+      const JointRecord& joints = record.joints[i];
+      csv << joints.time_s << ',' << state_name(joints.state) << ',' << joints.speed_scale;
+      for (const double q : joints.q) csv << ',' << q;
+      for (const double v : joints.velocity) csv << ',' << v;
+      const std::optional<HumanPose> pose = visit ? visit->at(joints.time_s) : std::nullopt;
+      if (pose) {
+        csv << ',' << pose->position_m.x() << ',' << pose->position_m.y() << ','
+            << result.contacts.distance_m[i] << '\n';
+      } else {
+        csv << ",,,\n";
+      }
+    }
+    write_file_atomically(settings.trace_file, csv.str());
+  }
   result.contacts.distance_m.clear();
   result.states = state_figures(record);
   result.states.latency_ms.clear();

@@ -26,6 +26,7 @@ struct ClosedLoopValidateOptions {
   bool look_ahead_off = false;  // --negative-control look-ahead-off
   std::string out_dir = "safecell-closed-loop";
   std::string controller_program;  // empty: found (find_controller_program)
+  bool trace = false;              // a CSV per scenario (every cycle) into out_dir
   bool json = false;
 };
 

@@ -43,6 +43,9 @@ struct LockstepSettings {
   double max_seconds = 30.0;         // a scenario ends here when the task has not
   double acknowledge_after_s = 1.0;  // the operator acknowledges a fault held this long
   bool look_ahead_off = false;       // the negative control (safety.test_only_look_ahead_off)
+  // When set: a CSV of every controller cycle (time, state, speed scale, joints, velocities, the
+  // person's place and the FCL distance) is written to this file.
+  std::filesystem::path trace_file;
 };
 
 struct ScenarioResult {
