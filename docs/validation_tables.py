@@ -8,13 +8,20 @@ import os
 import sys
 
 folder, date, commit = sys.argv[1], sys.argv[2], sys.argv[3]
-commands = {}
-seconds = {}
-with open(os.path.join(folder, "commands.tsv")) as tsv:
-    for line in tsv:
-        name, command, elapsed = line.rstrip("\n").split("\t")
-        commands[name] = command
-        seconds[name] = int(elapsed)
+
+
+def read_commands(file_name):
+    """A scripts' commands.tsv: per run name, its command and its seconds."""
+    commands, seconds = {}, {}
+    with open(os.path.join(folder, file_name)) as tsv:
+        for line in tsv:
+            name, command, elapsed = line.rstrip("\n").split("\t")
+            commands[name] = command
+            seconds[name] = int(elapsed)
+    return commands, seconds
+
+
+commands, seconds = read_commands("commands.tsv")
 
 
 def report(name):
@@ -222,13 +229,7 @@ def closed_loop_section():
               if os.path.exists(os.path.join(folder, name + ".json"))]
     if not shards:
         return
-    loop_commands = {}
-    loop_seconds = {}
-    with open(os.path.join(folder, "closed-loop-commands.tsv")) as tsv:
-        for line in tsv:
-            name, command, elapsed = line.rstrip("\n").split("\t")
-            loop_commands[name] = command
-            loop_seconds[name] = int(elapsed)
+    loop_commands, loop_seconds = read_commands("closed-loop-commands.tsv")
     with open(os.path.join(folder, "closed-loop-run.tsv")) as tsv:
         run_date, run_commit = tsv.readline().rstrip("\n").split("\t")
     runs = [report(name) for name in shards]
