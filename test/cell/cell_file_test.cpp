@@ -70,6 +70,50 @@ TEST(CellFile, BlindSpotsAreForbiddenUnlessTheCellAllowsThem) {
             "bad.yaml:11: blind_spots: value 'ignore', expected forbid or allow");
 }
 
+TEST(CellFile, EntriesAndTheirSeparation) {
+  const CellConfig open = parse_cell_yaml(kTwoJoints, "two.yaml");
+  EXPECT_FALSE(open.entries.has_value());
+  EXPECT_EQ(open.entry_separation.approach_speed_m_s, 1.6);
+  const CellConfig fenced = parse_cell_yaml(std::string(kTwoJoints) +
+                                                "entries:\n"
+                                                "  - {name: door, wall: +y, span_m: [-1, 0.5]}\n"
+                                                "entry_separation: {stopping_s: 0.5}\n",
+                                            "two.yaml");
+  ASSERT_TRUE(fenced.entries.has_value());
+  ASSERT_EQ(fenced.entries->size(), 1U);
+  EXPECT_EQ(fenced.entries->front().name, "door");
+  EXPECT_EQ(fenced.entries->front().wall, CellWall::kPlusY);
+  EXPECT_EQ(fenced.entries->front().span_m[1], 0.5);
+  EXPECT_EQ(fenced.entry_separation.stopping_s, 0.5);
+  EXPECT_EQ(fenced.entry_separation.response_s, 0.1);
+  ASSERT_TRUE(default_cell().entries.has_value());
+
+  const auto entry = [](const std::string& item) {
+    return error_of(std::string(kTwoJoints) + "entries:\n  - " + item + "\n");
+  };
+  EXPECT_EQ(entry("{name: door, wall: up, span_m: [0, 1]}"),
+            "bad.yaml:12: entries[0].wall: value 'up', expected -x, +x, -y or +y");
+  EXPECT_EQ(entry("{name: door, wall: -x, span_m: [1, 0]}"),
+            "bad.yaml:12: entries[0].span_m: value [1, 0], expected [from, to] with -2 <= from < "
+            "to <= 2 (the wall's extent in metres)");
+  EXPECT_EQ(entry("{name: door, wall: -x, span_m: [1, 2.5]}"),
+            "bad.yaml:12: entries[0].span_m: value [1, 2.5], expected [from, to] with -2 <= from "
+            "< to <= 2 (the wall's extent in metres)");
+  EXPECT_EQ(entry("{name: door, span_m: [0, 1]}"),
+            "bad.yaml:12: entries[0].wall: missing (required)");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entries: []\n"),
+            "bad.yaml:11: entries: an empty list, expected at least one entry (leave the field "
+            "out when the cell does not say where people come in)");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {response_s: -1}\n"),
+            "bad.yaml:11: entry_separation.response_s: value -1, expected 0 .. 2 s");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {approach_speed_m_s: 0.1}\n"),
+            "bad.yaml:11: entry_separation.approach_speed_m_s: value 0.1, expected 0.5 .. 3 m/s "
+            "(ISO 13855: 1.6 m/s walking)");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {speed: 1}\n"),
+            "bad.yaml:11: entry_separation.speed: unknown field (expected one of: "
+            "approach_speed_m_s, response_s, stopping_s, intrusion_m)");
+}
+
 TEST(CellFile, MissingFieldIsNamed) {
   std::string text = kTwoJoints;
   text.replace(text.find("m_max_m: 0.2\n"), 13, "");

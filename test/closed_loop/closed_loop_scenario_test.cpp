@@ -63,7 +63,8 @@ TEST(ClosedLoopScenario, DrawnFromSeedAndIndexAloneWithinTheStatedBounds) {
       EXPECT_LE(stop.norm(), 2.2 + 1e-9) << described(s);
     } else {
       ASSERT_EQ(s.kind, "cross");
-      const double passes = distance_to_base(s.person.approach_m.front(), stop);
+      const double passes =
+          distance_to_base(s.person.approach_m[s.person.approach_m.size() - 2], stop);
       EXPECT_GE(passes, 0.8 - 1e-6) << described(s);
       EXPECT_LE(passes, 1.6 + 1e-6) << described(s);
     }
@@ -80,6 +81,60 @@ TEST(ClosedLoopScenario, DrawnFromSeedAndIndexAloneWithinTheStatedBounds) {
   // A different seed gives different scenarios.
   EXPECT_NE(draw_scenario(default_model(), default_grid(), 8, 0, 8).person.approach_m,
             draw_scenario(default_model(), default_grid(), 7, 0, 8).person.approach_m);
+}
+
+double length_m(const std::vector<Eigen::Vector2d>& path, std::size_t points) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < points; ++i) length += (path[i] - path[i - 1]).norm();
+  return length;
+}
+
+bool inside_fence(const Eigen::Vector2d& p) {
+  return std::abs(p.x()) <= 1.7 + 1e-9 && std::abs(p.y()) <= 1.7 + 1e-9;
+}
+
+TEST(ClosedLoopScenario, PeopleComeInAndGoOutThroughTheDoorWalkingAlongTheFence) {
+  const EntryConfig& door = default_model().config.entries.value().front();
+  ASSERT_EQ(door.wall, CellWall::kMinusX);
+  const auto at_door = [&](const Eigen::Vector2d& p, double x) {
+    return std::abs(p.x() - x) < 1e-9 && p.y() >= door.span_m[0] && p.y() <= door.span_m[1];
+  };
+  for (std::size_t index = 0; index < 200; ++index) {
+    const ClosedLoopScenario s = draw_scenario(default_model(), default_grid(), 7, index, 8);
+    const auto& in = s.person.approach_m;
+    const auto& out = s.person.leave_m;
+    ASSERT_GE(in.size(), 3U) << described(s);
+    EXPECT_TRUE(at_door(in[0], -2.6)) << described(s);
+    EXPECT_TRUE(at_door(in[1], -1.7)) << described(s);
+    EXPECT_TRUE(at_door(out.back(), -2.6)) << described(s);
+    EXPECT_TRUE(at_door(out[out.size() - 2], -1.7)) << described(s);
+    for (std::size_t i = 1; i < in.size(); ++i) EXPECT_TRUE(inside_fence(in[i])) << described(s);
+    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+      EXPECT_TRUE(inside_fence(out[i])) << described(s);
+    }
+    // Along the fence: every step of the walk in up to the visit's own path keeps to it.
+    for (std::size_t i = 2; i + 1 < in.size(); ++i) {
+      const bool on_fence =
+          std::abs(std::abs(in[i].x()) - 1.7) < 1e-9 || std::abs(std::abs(in[i].y()) - 1.7) < 1e-9;
+      EXPECT_TRUE(on_fence) << described(s);
+    }
+    // They reach the start of the visit's path at the drawn time, 0.3 .. 2.5 s into the run.
+    const double arrives = s.person.enters_s + length_m(in, in.size() - 1) / s.person.speed_m_s;
+    EXPECT_GE(arrives, 0.3 - 1e-9) << described(s);
+    EXPECT_LE(arrives, 2.5 + 1e-9) << described(s);
+  }
+}
+
+TEST(ClosedLoopScenario, WithoutEntriesPeopleStepInAtTheWalls) {
+  CellModel open = default_model();
+  open.config.entries.reset();
+  for (std::size_t index = 0; index < 50; ++index) {
+    const ClosedLoopScenario s = draw_scenario(open, default_grid(), 7, index, 8);
+    ASSERT_EQ(s.person.approach_m.size(), 2U) << described(s);
+    const Eigen::Vector2d from = s.person.approach_m.front();
+    EXPECT_TRUE(inside_fence(from)) << described(s);
+    EXPECT_GE(s.person.enters_s, 0.3) << described(s);
+  }
 }
 
 TEST(PersonVisit, OutsideBeforeAndAfterStandingFacingTheBaseAndReaching) {

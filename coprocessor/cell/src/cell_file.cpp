@@ -155,6 +155,74 @@ BoxObstacleConfig obstacle_of(const Field& field) {
   return box;
 }
 
+// A number in [lo, hi] (units in the message's `expected`).
+double bounded_of(const Field& field, double lo, double hi, const char* expected) {
+  const double value = number_of(field);
+  if (!(std::isfinite(value) && value >= lo && value <= hi)) {
+    throw_cell_error(field.at, field.path,
+                     "value " + field.node.Scalar() + ", expected " + std::string(expected));
+  }
+  return value;
+}
+
+// One entry: {name, wall: -x | +x | -y | +y, span_m: [from, to]} along a wall of a cell of
+// `size_m`.
+EntryConfig entry_of(const Field& field, const std::array<double, 3>& size_m) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"name", "wall", "span_m"});
+  EntryConfig entry;
+  entry.at = field.at;
+  entry.name = text_of(require(field, "name"));
+  const Field wall = require(field, "wall");
+  const std::string side = text_of(wall);
+  if (side == "-x") {
+    entry.wall = CellWall::kMinusX;
+  } else if (side == "+x") {
+    entry.wall = CellWall::kPlusX;
+  } else if (side == "-y") {
+    entry.wall = CellWall::kMinusY;
+  } else if (side == "+y") {
+    entry.wall = CellWall::kPlusY;
+  } else {
+    throw_cell_error(wall.at, wall.path, "value '" + side + "', expected -x, +x, -y or +y");
+  }
+  const Field span = require(field, "span_m");
+  const auto values = numbers_of(span, 2, "[from, to] along the wall in metres");
+  const bool x_wall = entry.wall == CellWall::kMinusX || entry.wall == CellWall::kPlusX;
+  const double half = (x_wall ? size_m[1] : size_m[0]) / 2.0;
+  if (!(values[0] < values[1] && values[0] >= -half && values[1] <= half)) {
+    std::ostringstream expected;
+    expected << "[from, to] with -" << half << " <= from < to <= " << half
+             << " (the wall's extent in metres)";
+    throw_cell_error(span.at, span.path,
+                     "value [" + span.node[0].Scalar() + ", " + span.node[1].Scalar() +
+                         "], expected " + expected.str());
+  }
+  entry.span_m = {values[0], values[1]};
+  return entry;
+}
+
+EntrySeparationConfig entry_separation_of(const Field& field) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"approach_speed_m_s", "response_s", "stopping_s", "intrusion_m"});
+  EntrySeparationConfig separation;
+  separation.at = field.at;
+  if (field.node["approach_speed_m_s"]) {
+    separation.approach_speed_m_s = bounded_of(require(field, "approach_speed_m_s"), 0.5, 3.0,
+                                               "0.5 .. 3 m/s (ISO 13855: 1.6 m/s walking)");
+  }
+  if (field.node["response_s"]) {
+    separation.response_s = bounded_of(require(field, "response_s"), 0.0, 2.0, "0 .. 2 s");
+  }
+  if (field.node["stopping_s"]) {
+    separation.stopping_s = bounded_of(require(field, "stopping_s"), 0.0, 5.0, "0 .. 5 s");
+  }
+  if (field.node["intrusion_m"]) {
+    separation.intrusion_m = bounded_of(require(field, "intrusion_m"), 0.0, 2.0, "0 .. 2 m");
+  }
+  return separation;
+}
+
 CameraConfig camera_of(const Field& field, const std::filesystem::path& base_directory) {
   require_mapping(field);
   refuse_unknown_keys(field, {"name", "calibration", "look_at"});
@@ -203,8 +271,9 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
   if (!root.IsMap()) {
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
-  refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
-                            "feature_grid", "blocked_cells", "camera_threshold", "blind_spots"});
+  refuse_unknown_keys(
+      top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles", "feature_grid",
+            "blocked_cells", "camera_threshold", "blind_spots", "entries", "entry_separation"});
 
   CellConfig cell;
   cell.source = source;
@@ -274,6 +343,20 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     }
     cell.forbid_blind_spots = value == "forbid";
     cell.blind_spots_at = blind_spots.at;
+  }
+  if (root["entries"]) {
+    const Field entries = require(top, "entries");
+    cell.entries_at = entries.at;
+    cell.entries = list_of<EntryConfig>(
+        entries, [&](const Field& item) { return entry_of(item, cell.size_m); });
+    if (cell.entries->empty()) {
+      throw_cell_error(entries.at, "entries",
+                       "an empty list, expected at least one entry (leave the field out when the "
+                       "cell does not say where people come in)");
+    }
+  }
+  if (root["entry_separation"]) {
+    cell.entry_separation = entry_separation_of(require(top, "entry_separation"));
   }
   return cell;
 }

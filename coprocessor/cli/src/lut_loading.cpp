@@ -1,9 +1,9 @@
 #include "lut_loading.hpp"
 
 #include <iostream>
-#include <optional>
 
 #include "progress_bar.hpp"
+#include "safecell/cell/entry_zones.hpp"
 #include "safecell/validation/floor_coverage.hpp"
 
 namespace safecell {
@@ -14,9 +14,8 @@ constexpr const char* kStages[kLutBuildStages] = {"building LUT-1 silhouettes", 
 
 }  // namespace
 
-CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
-                     const std::string& cache_folder, std::ostream& err) {
-  std::optional<CellModel> with_blind_spots;
+CellModel tables_cell(const CellModel& cell, const CspaceGrid& grid, std::ostream& err) {
+  CellModel tables = cell;
   if (!cell.config.forbid_blind_spots) {
     err << "warning: " << cell.config.source
         << ": blind_spots: allow - people the cameras cannot see may stand where the robot "
@@ -25,17 +24,32 @@ CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelL
     CoverageOptions coverage_options;
     coverage_options.step_m = kBlindSpotStep_m;
     const FloorCoverage coverage = floor_coverage(cell, grid, coverage_options);
-    CellModel forbidding = with_blind_spots_forbidden(cell, coverage);
-    if (forbidding.obstacles.size() > cell.obstacles.size()) {
-      with_blind_spots = std::move(forbidding);
+    tables = with_blind_spots_forbidden(cell, coverage);
+    if (tables.obstacles.size() > cell.obstacles.size()) {
       err << "blind spots: " << coverage.reach_blind_positions()
           << " floor positions within the robot's reach are seen by fewer than "
           << coverage.camera_threshold << " cameras; the cells reaching there are forbidden\n";
     }
   }
+  if (!cell.config.entries) {
+    err << "warning: " << cell.config.source
+        << ": no entries named - people may step in anywhere along the walls, where the robot "
+           "may not have room to stop (name the cell's entries to keep it away from them)\n";
+  } else {
+    tables = with_entry_zones_forbidden(tables);
+    err << "entries: " << cell.config.entries->size() << "; the cells within "
+        << separation_distance_m(cell.config.entry_separation)
+        << " m of them (the separation distance) are forbidden\n";
+  }
+  return tables;
+}
+
+CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
+                     const std::string& cache_folder, std::ostream& err) {
+  const CellModel tables = tables_cell(cell, grid, err);
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   CachedLuts luts = model_luts_cached(
-      with_blind_spots ? *with_blind_spots : cell, grid, options,
+      tables, grid, options,
       cache_folder.empty() ? default_lut_cache_folder() : std::filesystem::path(cache_folder),
       [&bar](int stage, double fraction) { bar.update(kStages[stage], fraction); });
   bar.finish();

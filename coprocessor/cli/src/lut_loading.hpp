@@ -13,9 +13,14 @@ namespace safecell {
 // so that loading cached tables stays quick; the volumes grow by half of it.
 inline constexpr double kBlindSpotStep_m = 0.2;
 
+// The cell the tables are built from: `cell` with the volumes no robot may reach into as static
+// obstacles. Blind spots (floor_coverage.hpp, at kBlindSpotStep_m) unless the cell allows them,
+// and the zones within the separation distance of each entry (entry_zones.hpp). What the cell
+// leaves open (blind spots allowed, no entries named) is a warning on `err`.
+CellModel tables_cell(const CellModel& cell, const CspaceGrid& grid, std::ostream& err);
+
 // cache_folder: empty for the default. Messages (build, rebuild reason, blind spots) go to
-// `err`. Unless the cell allows them (with a warning), blind spots are forbidden: the tables are
-// built with their volumes as static obstacles (floor_coverage.hpp, at kBlindSpotStep_m).
+// `err`. The tables are those of tables_cell(cell).
 CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
                      const std::string& cache_folder, std::ostream& err);
 

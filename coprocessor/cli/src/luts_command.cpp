@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "lut_loading.hpp"
 #include "progress_bar.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
@@ -126,8 +127,10 @@ void print_summary(const nlohmann::ordered_json& report, std::ostream& out) {
 }  // namespace
 
 void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err) {
-  const CellModel cell = load_cell_model(load_cell_file_or_default(options.cell_path));
-  const CspaceGrid grid = make_grid(cell.config);
+  const CellModel loaded = load_cell_model(load_cell_file_or_default(options.cell_path));
+  const CspaceGrid grid = make_grid(loaded.config);
+  // The same tables as the commands that run the pipeline use, so that they find them cached.
+  const CellModel cell = tables_cell(loaded, grid, err);
   ModelLutOptions lut_options;
   lut_options.ball_radius_m = options.ball_radius_m;
   lut_options.padding_m = options.padding_m;

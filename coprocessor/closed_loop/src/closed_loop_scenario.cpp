@@ -6,12 +6,14 @@
 #include <numbers>
 #include <random>
 
+#include "safecell/cell/entry_zones.hpp"
 #include "safecell/closed_loop/controller_setup.hpp"
 
 namespace safecell {
 namespace {
 
 constexpr double kWallInset_m = 0.3;  // people come in this far inside the cell's walls
+constexpr double kOutside_m = 0.6;    // where people start and end, outside an entry
 constexpr std::size_t kGoals = 3;
 
 // A generator for one (seed, stream, index): scenarios and tasks do not share draws, so adding a
@@ -38,15 +40,97 @@ std::vector<double> working_pose(std::mt19937_64& rng, double base_rad) {
           uniform(rng, -1.0, 1.0)};
 }
 
+// The rectangle people walk along inside the walls (kWallInset_m in), parameterised by the
+// distance along it from its (-x, -y) corner: along -y, up +x, back along +y, down -x.
+struct InsetRectangle {
+  double hx = 0.0;
+  double hy = 0.0;
+
+  explicit InsetRectangle(const CellModel& cell)
+      : hx(cell.config.size_m[0] / 2.0 - kWallInset_m),
+        hy(cell.config.size_m[1] / 2.0 - kWallInset_m) {}
+
+  [[nodiscard]] double perimeter() const { return 4.0 * (hx + hy); }
+
+  [[nodiscard]] Eigen::Vector2d point(double along) const {
+    if (along < 2.0 * hx) return {-hx + along, -hy};
+    if (along < 2.0 * hx + 2.0 * hy) return {hx, -hy + (along - 2.0 * hx)};
+    if (along < 4.0 * hx + 2.0 * hy) return {hx - (along - 2.0 * hx - 2.0 * hy), hy};
+    return {-hx, hy - (along - 4.0 * hx - 2.0 * hy)};
+  }
+
+  // Precondition: `p` lies on the rectangle.
+  [[nodiscard]] double along(const Eigen::Vector2d& p) const {
+    constexpr double kOn_m = 1e-6;
+    if (std::abs(p.y() + hy) < kOn_m) return p.x() + hx;
+    if (std::abs(p.x() - hx) < kOn_m) return 2.0 * hx + (p.y() + hy);
+    if (std::abs(p.y() - hy) < kOn_m) return 2.0 * hx + 2.0 * hy + (hx - p.x());
+    return 4.0 * hx + 2.0 * hy + (hy - p.y());
+  }
+
+  // The shorter way round from `from` to `to`: the corners passed, then `to`.
+  [[nodiscard]] std::vector<Eigen::Vector2d> walk(const Eigen::Vector2d& from,
+                                                  const Eigen::Vector2d& to) const {
+    const double length = perimeter();
+    const double a = along(from);
+    const double forward = std::fmod(along(to) - a + length, length);
+    const bool ahead = forward <= length / 2.0;
+    const double corners[] = {0.0, 2.0 * hx, 2.0 * hx + 2.0 * hy, 4.0 * hx + 2.0 * hy};
+    std::vector<std::pair<double, Eigen::Vector2d>> passed;  // (distance walked, corner)
+    for (const double corner : corners) {
+      const double way =
+          ahead ? std::fmod(corner - a + length, length) : std::fmod(a - corner + length, length);
+      if (way > 0.0 && way < (ahead ? forward : length - forward)) {
+        passed.emplace_back(way, point(corner));
+      }
+    }
+    std::sort(passed.begin(), passed.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<Eigen::Vector2d> path;
+    for (const auto& [way, corner] : passed) path.push_back(corner);
+    path.push_back(to);
+    return path;
+  }
+};
+
 // A point on the walls' inset rectangle, at a random place along its perimeter.
 Eigen::Vector2d wall_point(std::mt19937_64& rng, const CellModel& cell) {
-  const double hx = cell.config.size_m[0] / 2.0 - kWallInset_m;
-  const double hy = cell.config.size_m[1] / 2.0 - kWallInset_m;
-  const double along = uniform(rng, 0.0, 4.0 * (hx + hy));
-  if (along < 2.0 * hx) return {-hx + along, -hy};
-  if (along < 2.0 * hx + 2.0 * hy) return {hx, -hy + (along - 2.0 * hx)};
-  if (along < 4.0 * hx + 2.0 * hy) return {hx - (along - 2.0 * hx - 2.0 * hy), hy};
-  return {-hx, hy - (along - 4.0 * hx - 2.0 * hy)};
+  const InsetRectangle rectangle(cell);
+  return rectangle.point(uniform(rng, 0.0, rectangle.perimeter()));
+}
+
+double path_length_m(const std::vector<Eigen::Vector2d>& path) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) length += (path[i] - path[i - 1]).norm();
+  return length;
+}
+
+// How a person comes in through one of the cell's entries and goes out through one: from outside
+// the fence to the inset rectangle, and back.
+struct EntryRoute {
+  Eigen::Vector2d outside_in;
+  Eigen::Vector2d inside_in;
+  Eigen::Vector2d inside_out;
+  Eigen::Vector2d outside_out;
+};
+
+void append(std::vector<Eigen::Vector2d>& path, const Eigen::Vector2d& point) {
+  if (path.empty() || (path.back() - point).norm() > 1e-9) path.push_back(point);
+}
+
+EntryRoute entry_route(std::mt19937_64& rng, const CellModel& cell) {
+  const std::vector<EntryConfig>& entries = *cell.config.entries;
+  const auto pick = [&] {
+    return entries[std::uniform_int_distribution<std::size_t>(0, entries.size() - 1)(rng)];
+  };
+  const EntryConfig in = pick();
+  const EntryConfig out = pick();
+  const double along_in = uniform(rng, 0.2, 0.8);
+  const double along_out = uniform(rng, 0.2, 0.8);
+  return {entry_floor_point(cell.config, in, along_in, -kOutside_m),
+          entry_floor_point(cell.config, in, along_in, kWallInset_m),
+          entry_floor_point(cell.config, out, along_out, kWallInset_m),
+          entry_floor_point(cell.config, out, along_out, -kOutside_m)};
 }
 
 // Where a path from `from` that passes the base `offset_m` to its side (its nearest point, the
@@ -60,8 +144,9 @@ Eigen::Vector2d across(const CellModel& cell, const Eigen::Vector2d& from, doubl
   const Eigen::Vector2d through =
       radius * Eigen::Vector2d(std::cos(turn) * out.x() - std::sin(turn) * out.y(),
                                std::sin(turn) * out.x() + std::cos(turn) * out.y());
-  const double hx = cell.config.size_m[0] / 2.0 - kWallInset_m;
-  const double hy = cell.config.size_m[1] / 2.0 - kWallInset_m;
+  const InsetRectangle rectangle(cell);
+  const double hx = rectangle.hx;
+  const double hy = rectangle.hy;
   const Eigen::Vector2d heading = (through - from).normalized();
   // Walk on from `through` until a wall is reached.
   double t = std::numeric_limits<double>::infinity();
@@ -72,6 +157,29 @@ Eigen::Vector2d across(const CellModel& cell, const Eigen::Vector2d& from, doubl
     t = std::min(t, (std::copysign(hy, heading.y()) - through.y()) / heading.y());
   }
   return through + heading * t;
+}
+
+// Through the cell's entries (when it names them): the person comes in at one, walks along the
+// fence to where the visit's own path begins, arriving there at the time the plan says they
+// entered, and after the visit walks along the fence to an entry and out.
+void route_through_entries(PersonVisitPlan& person, const CellModel& cell, std::uint64_t seed,
+                           std::size_t index) {
+  if (!cell.config.entries) return;
+  std::mt19937_64 rng = generator(seed, 3, index);
+  const EntryRoute route = entry_route(rng, cell);
+  const InsetRectangle rectangle(cell);
+  std::vector<Eigen::Vector2d> in{route.outside_in, route.inside_in};
+  for (const auto& point : rectangle.walk(route.inside_in, person.approach_m.front())) {
+    append(in, point);
+  }
+  person.enters_s -= path_length_m(in) / person.speed_m_s;
+  // The visit's own path as drawn (its stop may be where it begins).
+  in.insert(in.end(), person.approach_m.begin() + 1, person.approach_m.end());
+  person.approach_m = std::move(in);
+  for (const auto& point : rectangle.walk(person.leave_m.back(), route.inside_out)) {
+    append(person.leave_m, point);
+  }
+  append(person.leave_m, route.outside_out);
 }
 
 }  // namespace
@@ -131,6 +239,7 @@ ClosedLoopScenario draw_scenario(const CellModel& cell, const CspaceGrid& grid, 
     person.stand_s = 0.0;
     person.leave_m = {to};
   }
+  route_through_entries(person, cell, seed, index);
   return scenario;
 }
 

@@ -84,6 +84,29 @@ struct BlockedCellConfig {
   SourceLine at;
 };
 
+// An opening in the cell's fence where people come in: a span along one wall. Outside the
+// entries the walls are closed, so a person is first seen at an entry (ISO 13855's detection
+// zone boundary) and the robot is kept the separation distance away from each (entry_zones.hpp).
+enum class CellWall { kMinusX, kPlusX, kMinusY, kPlusY };
+
+struct EntryConfig {
+  std::string name;
+  CellWall wall = CellWall::kMinusX;
+  // Along the wall: the y range of an x wall, the x range of a y wall; metres, from < to.
+  std::array<double, 2> span_m{0.0, 0.0};
+  SourceLine at;
+};
+
+// ISO 13855's minimum distance S = K * (t_response + t_stop) + C, kept between the robot and
+// every entry.
+struct EntrySeparationConfig {
+  double approach_speed_m_s = 1.6;  // K: people walk in at up to this speed
+  double response_s = 0.1;          // a person crossing the entry -> the stop command
+  double stopping_s = 0.3;          // the robot's stopping time from its top speed
+  double intrusion_m = 0.2;         // C: a hand or arm reaching ahead of the body
+  SourceLine at;
+};
+
 struct CellConfig {
   std::string name;
   std::string source;
@@ -109,6 +132,11 @@ struct CellConfig {
   // cell; `allow` leaves them, with a warning whenever the tables are loaded.
   bool forbid_blind_spots = true;
   SourceLine blind_spots_at;
+  // Where people come in. Unset: the cell does not say, so people may step in anywhere along
+  // the walls (a warning whenever the tables are loaded); set: at least one entry.
+  std::optional<std::vector<EntryConfig>> entries;
+  SourceLine entries_at;
+  EntrySeparationConfig entry_separation;
 };
 
 }  // namespace safecell

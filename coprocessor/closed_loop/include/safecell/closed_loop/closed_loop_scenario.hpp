@@ -5,6 +5,10 @@
 //             it, and goes back out;
 //   reach     walks to the edge of the arm's sweep and reaches into it;
 //   cross     walks through the cell on a straight line, 0.8 .. 1.6 m past the robot's base.
+// When the cell names its entries, people come in through one: they start outside, walk along the
+// fence to where the visit's path begins, and after it walk along the fence to an entry and out
+// (the walk in is timed so that they reach the path's start at the drawn time; it may begin
+// before the run). Without entries they step in anywhere along the walls.
 // The robot moves either as a robot program or with the gross-motion service (RobotTask).
 // People walk at 0.8 .. 1.6 m/s (ISO 13855's approach speed is the top). Tasks come from a small
 // pool, so that each task's time without people (its baseline) is run once. Every scenario is

@@ -1,8 +1,9 @@
 #pragma once
 // The world of the closed-loop demo: the robot's task (pick on one side, place on the other,
 // repeated: every move sweeps the arm through the side of the cell the person comes to) and the
-// person's visit: they walk in from a corner towards the arm, stand and reach towards it, and
-// walk out to another corner. Times are seconds since the demo began.
+// person's visit: they come in through the cell's first entry (or, in a cell that names none, at
+// a corner), walk along the fence towards the arm, stand and reach towards it, and walk out the
+// way they came (to another corner). Times are seconds since the demo began.
 
 #include <optional>
 #include <vector>

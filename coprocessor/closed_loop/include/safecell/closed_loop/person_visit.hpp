@@ -1,7 +1,8 @@
 #pragma once
-// A person's visit to the cell, in seconds since the run began: they walk in along a path, stand
-// for a while facing a point (the robot's base), the right arm reaching towards it or hanging,
-// and walk out along another path. Outside the visit nobody is in the cell.
+// A person's visit to the cell, in seconds since the run began (it may begin before): they walk
+// in along a path, stand for a while facing a point (the robot's base), the right arm reaching
+// towards it or hanging, and walk out along another path. Outside the visit nobody is in the
+// cell.
 
 #include <Eigen/Core>
 #include <optional>
