@@ -7,6 +7,9 @@
 # for 1,000 scenarios. Needs a host build and python3.
 #
 #   bash docs/closed_loop_validation.sh [SCENARIOS]   (default 1000)
+#
+# SAFECELL and SAFECELL_CONTROLLER name the programs to run (default: the host build's), so that
+# copies can run while the build goes on.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -22,6 +25,7 @@ mkdir -p "$out"
 run() {  # run NAME ARGS...: one JSON report (exit 1, contacts while moving, is a result)
   local name="$1"; shift
   local args=(validate --closed-loop --seed "$seed" --json --out "$out/$name.work" "$@")
+  [[ -z "${SAFECELL_CONTROLLER:-}" ]] || args+=(--controller-program "$SAFECELL_CONTROLLER")
   echo "closed_loop_validation.sh: $name: safecell ${args[*]}" >&2
   local status=0 start
   start=$(date +%s)
