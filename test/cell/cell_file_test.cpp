@@ -114,6 +114,42 @@ TEST(CellFile, EntriesAndTheirSeparation) {
             "approach_speed_m_s, response_s, stopping_s, intrusion_m)");
 }
 
+TEST(CellFile, CameraSources) {
+  const auto camera = [](const std::string& source) {
+    return std::string(kTwoJoints) +
+           "cameras:\n  - name: cam0\n    calibration: cam0.yaml\n    source: " + source + "\n";
+  };
+  const auto source_of = [&](const std::string& source) {
+    return parse_cell_yaml(camera(source), "/cells/two.yaml", "/cells")
+        .cameras.at(0)
+        .source.value();
+  };
+  using Kind = CameraSourceConfig::Kind;
+  EXPECT_EQ(source_of("{device: 2}").kind, Kind::kDevice);
+  EXPECT_EQ(source_of("{device: 2}").spec, "2");
+  EXPECT_EQ(source_of("{video: runs/cam0.mp4}").spec, "/cells/runs/cam0.mp4");
+  EXPECT_EQ(source_of("{folder: frames/cam0}").kind, Kind::kImageFolder);
+  EXPECT_EQ(source_of("{folder: /data/cam0}").spec, "/data/cam0");
+  EXPECT_EQ(source_of("{gstreamer: 'v4l2src ! videoconvert ! appsink'}").kind, Kind::kGstreamer);
+  EXPECT_EQ(source_of("{url: 'rtsp://10.0.0.5/stream1'}").kind, Kind::kStream);
+  EXPECT_FALSE(parse_cell_yaml(kTwoJoints, "two.yaml").cameras.size() > 0);
+
+  EXPECT_EQ(error_of(camera("{device: 0, video: a.mp4}")),
+            "bad.yaml:14: cameras[0].source: expected exactly one of device, video, folder, "
+            "gstreamer, url");
+  EXPECT_EQ(error_of(camera("{device: -1}")),
+            "bad.yaml:14: cameras[0].source.device: value -1, expected a device index 0 .. 99999");
+  EXPECT_EQ(error_of(camera("{gstreamer: v4l2src}")),
+            "bad.yaml:14: cameras[0].source.gstreamer: value 'v4l2src', expected a GStreamer "
+            "pipeline of elements joined by '!' ending in an appsink");
+  EXPECT_EQ(error_of(camera("{url: camera-3}")),
+            "bad.yaml:14: cameras[0].source.url: value 'camera-3', expected a URL such as "
+            "rtsp://host/stream");
+  EXPECT_EQ(error_of(camera("{usb: 0}")),
+            "bad.yaml:14: cameras[0].source.usb: unknown field (expected one of: device, video, "
+            "folder, gstreamer, url)");
+}
+
 TEST(CellFile, MissingFieldIsNamed) {
   std::string text = kTwoJoints;
   text.replace(text.find("m_max_m: 0.2\n"), 13, "");

@@ -223,12 +223,65 @@ EntrySeparationConfig entry_separation_of(const Field& field) {
   return separation;
 }
 
+// A camera's source: exactly one of device, video, folder, gstreamer, url.
+CameraSourceConfig camera_source_of(const Field& field,
+                                    const std::filesystem::path& base_directory) {
+  require_mapping(field);
+  refuse_unknown_keys(field, {"device", "video", "folder", "gstreamer", "url"});
+  if (field.node.size() != 1) {
+    throw_cell_error(field.at, field.path,
+                     "expected exactly one of device, video, folder, gstreamer, url");
+  }
+  using Kind = CameraSourceConfig::Kind;
+  CameraSourceConfig source;
+  source.at = field.at;
+  if (field.node["device"]) {
+    const Field device = require(field, "device");
+    const int index = integer_of(device);
+    if (index < 0 || index > 99'999) {
+      throw_cell_error(device.at, device.path,
+                       "value " + device.node.Scalar() + ", expected a device index 0 .. 99999");
+    }
+    source.kind = Kind::kDevice;
+    source.spec = std::to_string(index);
+  } else if (field.node["video"]) {
+    source.kind = Kind::kVideoFile;
+    source.spec = resolved(text_of(require(field, "video")), base_directory);
+  } else if (field.node["folder"]) {
+    source.kind = Kind::kImageFolder;
+    source.spec = resolved(text_of(require(field, "folder")), base_directory);
+  } else if (field.node["gstreamer"]) {
+    const Field pipeline = require(field, "gstreamer");
+    source.kind = Kind::kGstreamer;
+    source.spec = text_of(pipeline);
+    if (source.spec.find('!') == std::string::npos ||
+        source.spec.find("appsink") == std::string::npos) {
+      throw_cell_error(pipeline.at, pipeline.path,
+                       "value '" + source.spec +
+                           "', expected a GStreamer pipeline of elements joined by '!' ending in "
+                           "an appsink");
+    }
+  } else {
+    const Field url = require(field, "url");
+    source.kind = Kind::kStream;
+    source.spec = text_of(url);
+    if (source.spec.find("://") == std::string::npos) {
+      throw_cell_error(url.at, url.path,
+                       "value '" + source.spec + "', expected a URL such as rtsp://host/stream");
+    }
+  }
+  return source;
+}
+
 CameraConfig camera_of(const Field& field, const std::filesystem::path& base_directory) {
   require_mapping(field);
-  refuse_unknown_keys(field, {"name", "calibration", "look_at"});
+  refuse_unknown_keys(field, {"name", "calibration", "look_at", "source"});
   CameraConfig camera;
   camera.at = field.at;
   camera.name = text_of(require(field, "name"));
+  if (field.node["source"]) {
+    camera.source = camera_source_of(require(field, "source"), base_directory);
+  }
   const bool has_calibration = static_cast<bool>(field.node["calibration"]);
   if (has_calibration == static_cast<bool>(field.node["look_at"])) {
     throw_cell_error(field.at, field.path,

@@ -61,12 +61,27 @@ struct LookAtConfig {
   int height_px = 0;
 };
 
+// Where a camera's frames come from when the service runs on real cameras (`safecell run`).
+struct CameraSourceConfig {
+  enum class Kind {
+    kDevice,       // a capture device by index (V4L2 on Linux): `device: 0`
+    kVideoFile,    // `video: path` (relative to the cell file's folder)
+    kImageFolder,  // `folder: path`: image files in name order, times from frame_times.csv
+    kGstreamer,    // `gstreamer: "... ! appsink"`: a GStreamer pipeline ending in an appsink
+    kStream,       // `url: rtsp://...`: a network stream
+  };
+  Kind kind = Kind::kDevice;
+  std::string spec;  // the device index as text, the resolved path, the pipeline or the URL
+  SourceLine at;
+};
+
 struct CameraConfig {
   std::string name;
   // Exactly one of: an OpenCV calibration YAML (path resolved against the cell file's folder),
   // or a look-at placement.
   std::string calibration;
   std::optional<LookAtConfig> look_at;
+  std::optional<CameraSourceConfig> source;  // unset: simulated or replayed cameras only
   SourceLine at;
 };
 

@@ -1,0 +1,70 @@
+// A cell file's camera sources: each camera's `source:` opened as the backend it names, with the
+// camera's image size; real PNG files in a folder come out as that camera's frames, a folder that
+// is not there leaves that view unknown, and a camera without a source is named in the error.
+
+#include "safecell/acquisition/cell_camera_sources.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "safecell/acquisition/frame_set_acquirer.hpp"
+#include "safecell/cell/cell_error.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "scratch_folder.hpp"
+
+namespace safecell {
+namespace {
+
+// A cell of two 64 x 48 cameras; `sources` is each camera's source line.
+std::string cell_yaml(const std::string& source0, const std::string& source1) {
+  const auto camera = [](const std::string& name, double x, const std::string& source) {
+    return "  - name: " + name + "\n    look_at: {position_m: [" + std::to_string(x) +
+           ", 1.9, 2.9], target_m: [0, 0, 0.8], horizontal_fov_deg: 75, size_px: [64, 48]}\n" +
+           (source.empty() ? "" : "    source: " + source + "\n");
+  };
+  return "name: two cameras\nm_max_m: 0.2\njoints:\n  - {name: a, range_deg: [-90, 90], l_m: 1}\n"
+         "feature_grid: {columns: 8, rows: 8}\ncameras:\n" +
+         camera("cam0", 1.9, source0) + camera("cam1", -1.9, source1);
+}
+
+TEST(CellCameraSources, FramesOfAFolderOfPngFilesAndAnUnknownViewForAMissingFolder) {
+  const test::ScratchFolder scratch;
+  std::filesystem::create_directories(scratch.path() / "frames" / "cam0");
+  for (int i = 0; i < 3; ++i) {
+    const std::string file = "frame_" + std::to_string(i) + ".png";
+    ASSERT_TRUE(cv::imwrite((scratch.path() / "frames" / "cam0" / file).string(),
+                            cv::Mat(48, 64, CV_8UC1, cv::Scalar(40 + 10 * i))));
+  }
+  const CellModel cell = load_cell_model(parse_cell_yaml(
+      cell_yaml("{folder: frames/cam0}", "{folder: frames/cam1}"), "cell.yaml", scratch.path()));
+  ASSERT_EQ(cell.config.cameras[0].source->spec, (scratch.path() / "frames/cam0").string());
+  FrameSetAcquirer acquirer(cell_camera_sources(cell));
+  ASSERT_EQ(acquirer.camera_count(), 2U);
+  EXPECT_EQ(acquirer.source(1).name(), "cam1");
+  EXPECT_EQ(acquirer.source(0).frame_size(), cv::Size(64, 48));
+  for (int i = 0; i < 3; ++i) {
+    const FrameSet set = acquirer.acquire();
+    ASSERT_TRUE(set.frames[0].known()) << set.frames[0].view.detail;
+    EXPECT_EQ(set.frames[0].image.at<std::uint8_t>(10, 10), 40 + 10 * i);
+    EXPECT_FALSE(set.frames[1].known());
+    EXPECT_EQ(set.frames[1].view.fault, CameraFault::kUnavailable);
+  }
+  EXPECT_FALSE(acquirer.acquire().frames[0].known()) << "the folder has run out";
+}
+
+TEST(CellCameraSources, ACameraWithoutASourceIsNamed) {
+  const CellModel cell =
+      load_cell_model(parse_cell_yaml(cell_yaml("", "{device: 0}"), "cell.yaml", "/tmp"));
+  try {
+    static_cast<void>(cell_camera_sources(cell));
+    FAIL() << "expected a CellError";
+  } catch (const CellError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "cell.yaml:7: cameras[0].source: missing; on real cameras each camera needs one "
+              "(device, video, folder, gstreamer or url)");
+  }
+}
+
+}  // namespace
+}  // namespace safecell
