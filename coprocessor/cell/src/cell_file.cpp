@@ -207,19 +207,16 @@ EntrySeparationConfig entry_separation_of(const Field& field) {
   refuse_unknown_keys(field, {"approach_speed_m_s", "response_s", "stopping_s", "intrusion_m"});
   EntrySeparationConfig separation;
   separation.at = field.at;
-  if (field.node["approach_speed_m_s"]) {
-    separation.approach_speed_m_s = bounded_of(require(field, "approach_speed_m_s"), 0.5, 3.0,
-                                               "0.5 .. 3 m/s (ISO 13855: 1.6 m/s walking)");
-  }
-  if (field.node["response_s"]) {
-    separation.response_s = bounded_of(require(field, "response_s"), 0.0, 2.0, "0 .. 2 s");
-  }
-  if (field.node["stopping_s"]) {
-    separation.stopping_s = bounded_of(require(field, "stopping_s"), 0.0, 5.0, "0 .. 5 s");
-  }
-  if (field.node["intrusion_m"]) {
-    separation.intrusion_m = bounded_of(require(field, "intrusion_m"), 0.0, 2.0, "0 .. 2 m");
-  }
+  // Each field is optional: absent, it keeps its default.
+  const auto read = [&field](const char* key, double& value, double lo, double hi,
+                             const char* expected) {
+    if (field.node[key]) value = bounded_of(require(field, key), lo, hi, expected);
+  };
+  read("approach_speed_m_s", separation.approach_speed_m_s, 0.5, 3.0,
+       "0.5 .. 3 m/s (ISO 13855: 1.6 m/s walking)");
+  read("response_s", separation.response_s, 0.0, 2.0, "0 .. 2 s");
+  read("stopping_s", separation.stopping_s, 0.0, 5.0, "0 .. 5 s");
+  read("intrusion_m", separation.intrusion_m, 0.0, 2.0, "0 .. 2 m");
   return separation;
 }
 

@@ -87,6 +87,7 @@ struct InsetRectangle {
     std::sort(passed.begin(), passed.end(),
               [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<Eigen::Vector2d> path;
+    path.reserve(passed.size() + 1);
     for (const auto& [way, corner] : passed) path.push_back(corner);
     path.push_back(to);
     return path;
