@@ -47,7 +47,11 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   const int frames = report["e2e_frames"].get<int>();
   EXPECT_LE(report["e2e_all_forbidden_frames"].get<int>() * 10, frames) << "of " << frames;
   EXPECT_TRUE(report.contains("e2e_updates_not_applied"));
-  EXPECT_GE(report["e2e_latency_p50_ms"].get<double>(), report["e2e_to_sent_p50_ms"].get<double>());
+  // Latency is measured on the controller's clock, "to sent" on the coprocessor's; the clock
+  // offset estimate is good to well within a millisecond (a clean-clone ASan run had them
+  // 0.14 ms the wrong way round).
+  EXPECT_GE(report["e2e_latency_p50_ms"].get<double>() + 1.0,
+            report["e2e_to_sent_p50_ms"].get<double>());
   EXPECT_GE(report["e2e_latency_p99_ms"].get<double>(), report["e2e_latency_p50_ms"].get<double>());
 }
 
