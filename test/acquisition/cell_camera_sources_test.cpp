@@ -53,6 +53,21 @@ TEST(CellCameraSources, FramesOfAFolderOfPngFilesAndAnUnknownViewForAMissingFold
   EXPECT_FALSE(acquirer.acquire().frames[0].known()) << "the folder has run out";
 }
 
+TEST(CellCameraSources, AVideoFileIsOpenedAsAFileWhateverItsName) {
+  // "0" would read as device 0, and a '!' as a GStreamer pipeline: the cell file says "video".
+  const test::ScratchFolder scratch;
+  const CellModel cell = load_cell_model(parse_cell_yaml(
+      cell_yaml("{video: '0'}", "{video: 'take!1.mp4'}"), "cell.yaml", scratch.path()));
+  std::vector<std::unique_ptr<CameraSource>> sources = cell_camera_sources(cell);
+  ASSERT_EQ(sources.size(), 2U);
+  for (const auto& source : sources) {
+    const HealthReport grabbed = source->grab();
+    EXPECT_EQ(grabbed.fault, CameraFault::kUnavailable);
+    EXPECT_NE(grabbed.detail.find("video file"), std::string::npos) << grabbed.detail;
+    EXPECT_NE(grabbed.detail.find("no such file"), std::string::npos) << grabbed.detail;
+  }
+}
+
 TEST(CellCameraSources, ACameraWithoutASourceIsNamed) {
   const CellModel cell =
       load_cell_model(parse_cell_yaml(cell_yaml("", "{device: 0}"), "cell.yaml", "/tmp"));

@@ -132,7 +132,8 @@ TEST(CellFile, CameraSources) {
   EXPECT_EQ(source_of("{folder: /data/cam0}").spec, "/data/cam0");
   EXPECT_EQ(source_of("{gstreamer: 'v4l2src ! videoconvert ! appsink'}").kind, Kind::kGstreamer);
   EXPECT_EQ(source_of("{url: 'rtsp://10.0.0.5/stream1'}").kind, Kind::kStream);
-  EXPECT_FALSE(parse_cell_yaml(kTwoJoints, "two.yaml").cameras.size() > 0);
+  EXPECT_EQ(source_of("{video: '0'}").kind, Kind::kVideoFile);
+  EXPECT_EQ(source_of("{video: '0'}").spec, "/cells/0");
 
   EXPECT_EQ(error_of(camera("{device: 0, video: a.mp4}")),
             "bad.yaml:14: cameras[0].source: expected exactly one of device, video, folder, "

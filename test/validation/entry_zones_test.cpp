@@ -54,6 +54,18 @@ TEST(EntryZones, OneBoxPerEntryReachingSIntoTheCellAndSPastTheOpening) {
   EXPECT_NEAR(gate.x(), 2.0 - (1.5 - s), 1e-12);
   EXPECT_NEAR(gate.y(), s, 1e-12);
   EXPECT_NEAR(zones[1].pose.translation().y(), 2.0 - s / 2.0, 1e-12);
+  // The other two walls: a box S deep inside the +x wall, and inside the -y wall.
+  cell.entries = {{"hatch", CellWall::kPlusX, {0.0, 0.5}, {}},
+                  {"gap", CellWall::kMinusY, {-0.5, 0.5}, {}}};
+  const std::vector<PlacedShape> more = entry_zone_volumes(cell);
+  ASSERT_EQ(more.size(), 2U);
+  EXPECT_NEAR(more[0].pose.translation().x(), 2.0 - s / 2.0, 1e-12);
+  EXPECT_NEAR(more[0].pose.translation().y(), 0.25, 1e-12);
+  EXPECT_NEAR(std::get<Box>(more[0].shape).size_m.y(), 0.5 + 2.0 * s, 1e-12);
+  EXPECT_NEAR(more[1].pose.translation().y(), -2.0 + s / 2.0, 1e-12);
+  EXPECT_NEAR(std::get<Box>(more[1].shape).size_m.x(), 1.0 + 2.0 * s, 1e-12);
+  EXPECT_NEAR(more[1].pose.translation().z(), 1.5, 1e-12);
+  EXPECT_NEAR(std::get<Box>(more[1].shape).size_m.z(), 3.0, 1e-12);
   cell.entries.reset();
   EXPECT_TRUE(entry_zone_volumes(cell).empty());
 }

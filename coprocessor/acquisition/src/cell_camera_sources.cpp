@@ -17,14 +17,31 @@ std::vector<std::unique_ptr<CameraSource>> cell_camera_sources(const CellModel& 
     }
     const CameraIntrinsics& k = cell.cameras.at(c).intrinsics();
     const cv::Size size(k.width_px, k.height_px);
-    if (camera.source->kind == CameraSourceConfig::Kind::kImageFolder) {
-      sources.push_back(
-          std::make_unique<ImageFolderSource>(camera.name, size, camera.source->spec));
-    } else {
-      // VideoCaptureSource tells the kinds apart by the spec itself; the cell file has checked
-      // that each kind's spec reads as that kind.
-      sources.push_back(
-          std::make_unique<VideoCaptureSource>(camera.name, size, camera.source->spec));
+    using Kind = CameraSourceConfig::Kind;
+    using Video = VideoCaptureSource::Kind;
+    const std::string& spec = camera.source->spec;
+    switch (camera.source->kind) {
+      case Kind::kImageFolder:
+        sources.push_back(std::make_unique<ImageFolderSource>(camera.name, size, spec));
+        break;
+      // The kind the cell file names, not what the text looks like: a video file called "0" is
+      // still a file.
+      case Kind::kDevice:
+        sources.push_back(
+            std::make_unique<VideoCaptureSource>(camera.name, size, Video::kDevice, spec));
+        break;
+      case Kind::kVideoFile:
+        sources.push_back(
+            std::make_unique<VideoCaptureSource>(camera.name, size, Video::kFile, spec));
+        break;
+      case Kind::kGstreamer:
+        sources.push_back(
+            std::make_unique<VideoCaptureSource>(camera.name, size, Video::kPipeline, spec));
+        break;
+      case Kind::kStream:
+        sources.push_back(
+            std::make_unique<VideoCaptureSource>(camera.name, size, Video::kStream, spec));
+        break;
     }
   }
   return sources;

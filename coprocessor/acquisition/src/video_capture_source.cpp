@@ -21,24 +21,41 @@ bool all_digits(const std::string& text) {
 
 }  // namespace
 
+VideoCaptureSource::Kind VideoCaptureSource::kind_of(const std::string& spec) {
+  if (all_digits(spec) && spec.size() < 6) return Kind::kDevice;
+  if (spec.find('!') != std::string::npos) return Kind::kPipeline;
+  if (spec.find("://") != std::string::npos) return Kind::kStream;
+  return Kind::kFile;
+}
+
 VideoCaptureSource::VideoCaptureSource(std::string camera_name, cv::Size frame_size,
+                                       const std::string& spec)
+    : VideoCaptureSource(std::move(camera_name), frame_size, kind_of(spec), spec) {}
+
+VideoCaptureSource::VideoCaptureSource(std::string camera_name, cv::Size frame_size, Kind kind,
                                        std::string spec)
     : name_(std::move(camera_name)),
       frame_size_(frame_size),
       spec_(std::move(spec)),
+      kind_(kind),
       capture_(std::make_unique<cv::VideoCapture>()) {
-  if (all_digits(spec_) && spec_.size() < 6) {
-    kind_ = Kind::kDevice;
-    what_ = "device " + spec_;
-  } else if (spec_.find('!') != std::string::npos) {
-    kind_ = Kind::kPipeline;
-    what_ = "GStreamer pipeline '" + spec_ + "'";
-  } else if (spec_.find("://") != std::string::npos) {
-    kind_ = Kind::kStream;
-    what_ = "stream '" + spec_ + "'";
-  } else {
-    kind_ = Kind::kFile;
-    what_ = "video file '" + spec_ + "'";
+  switch (kind_) {
+    case Kind::kDevice:
+      what_ = "device " + spec_;
+      if (!all_digits(spec_) || spec_.size() >= 6) {
+        open_problem_ = "cannot open " + what_ + ": a device is named by its index (0 .. 99999)";
+        return;
+      }
+      break;
+    case Kind::kPipeline:
+      what_ = "GStreamer pipeline '" + spec_ + "'";
+      break;
+    case Kind::kStream:
+      what_ = "stream '" + spec_ + "'";
+      break;
+    case Kind::kFile:
+      what_ = "video file '" + spec_ + "'";
+      break;
   }
   open();
 }

@@ -6,14 +6,12 @@
 #include <numbers>
 #include <random>
 
-#include "safecell/cell/entry_zones.hpp"
 #include "safecell/closed_loop/controller_setup.hpp"
+#include "safecell/closed_loop/fence_walk.hpp"
 
 namespace safecell {
 namespace {
 
-constexpr double kWallInset_m = 0.3;  // people come in this far inside the cell's walls
-constexpr double kOutside_m = 0.6;    // where people start and end, outside an entry
 constexpr std::size_t kGoals = 3;
 
 // A generator for one (seed, stream, index): scenarios and tasks do not share draws, so adding a
@@ -39,60 +37,6 @@ std::vector<double> working_pose(std::mt19937_64& rng, double base_rad) {
           0.6 + uniform(rng, -0.3, 0.3),
           uniform(rng, -1.0, 1.0)};
 }
-
-// The rectangle people walk along inside the walls (kWallInset_m in), parameterised by the
-// distance along it from its (-x, -y) corner: along -y, up +x, back along +y, down -x.
-struct InsetRectangle {
-  double hx = 0.0;
-  double hy = 0.0;
-
-  explicit InsetRectangle(const CellModel& cell)
-      : hx(cell.config.size_m[0] / 2.0 - kWallInset_m),
-        hy(cell.config.size_m[1] / 2.0 - kWallInset_m) {}
-
-  [[nodiscard]] double perimeter() const { return 4.0 * (hx + hy); }
-
-  [[nodiscard]] Eigen::Vector2d point(double along) const {
-    if (along < 2.0 * hx) return {-hx + along, -hy};
-    if (along < 2.0 * hx + 2.0 * hy) return {hx, -hy + (along - 2.0 * hx)};
-    if (along < 4.0 * hx + 2.0 * hy) return {hx - (along - 2.0 * hx - 2.0 * hy), hy};
-    return {-hx, hy - (along - 4.0 * hx - 2.0 * hy)};
-  }
-
-  // Precondition: `p` lies on the rectangle.
-  [[nodiscard]] double along(const Eigen::Vector2d& p) const {
-    constexpr double kOn_m = 1e-6;
-    if (std::abs(p.y() + hy) < kOn_m) return p.x() + hx;
-    if (std::abs(p.x() - hx) < kOn_m) return 2.0 * hx + (p.y() + hy);
-    if (std::abs(p.y() - hy) < kOn_m) return 2.0 * hx + 2.0 * hy + (hx - p.x());
-    return 4.0 * hx + 2.0 * hy + (hy - p.y());
-  }
-
-  // The shorter way round from `from` to `to`: the corners passed, then `to`.
-  [[nodiscard]] std::vector<Eigen::Vector2d> walk(const Eigen::Vector2d& from,
-                                                  const Eigen::Vector2d& to) const {
-    const double length = perimeter();
-    const double a = along(from);
-    const double forward = std::fmod(along(to) - a + length, length);
-    const bool ahead = forward <= length / 2.0;
-    const double corners[] = {0.0, 2.0 * hx, 2.0 * hx + 2.0 * hy, 4.0 * hx + 2.0 * hy};
-    std::vector<std::pair<double, Eigen::Vector2d>> passed;  // (distance walked, corner)
-    for (const double corner : corners) {
-      const double way =
-          ahead ? std::fmod(corner - a + length, length) : std::fmod(a - corner + length, length);
-      if (way > 0.0 && way < (ahead ? forward : length - forward)) {
-        passed.emplace_back(way, point(corner));
-      }
-    }
-    std::sort(passed.begin(), passed.end(),
-              [](const auto& x, const auto& y) { return x.first < y.first; });
-    std::vector<Eigen::Vector2d> path;
-    path.reserve(passed.size() + 1);
-    for (const auto& [way, corner] : passed) path.push_back(corner);
-    path.push_back(to);
-    return path;
-  }
-};
 
 // A point on the walls' inset rectangle, at a random place along its perimeter.
 Eigen::Vector2d wall_point(std::mt19937_64& rng, const CellModel& cell) {
@@ -128,10 +72,9 @@ EntryRoute entry_route(std::mt19937_64& rng, const CellModel& cell) {
   const EntryConfig out = pick();
   const double along_in = uniform(rng, 0.2, 0.8);
   const double along_out = uniform(rng, 0.2, 0.8);
-  return {entry_floor_point(cell.config, in, along_in, -kOutside_m),
-          entry_floor_point(cell.config, in, along_in, kWallInset_m),
-          entry_floor_point(cell.config, out, along_out, kWallInset_m),
-          entry_floor_point(cell.config, out, along_out, -kOutside_m)};
+  const Doorway door_in = fence_doorway(cell, in, along_in);
+  const Doorway door_out = fence_doorway(cell, out, along_out);
+  return {door_in.outside_m, door_in.inside_m, door_out.inside_m, door_out.outside_m};
 }
 
 // Where a path from `from` that passes the base `offset_m` to its side (its nearest point, the

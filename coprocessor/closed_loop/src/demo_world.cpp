@@ -1,7 +1,7 @@
 #include "safecell/closed_loop/demo_world.hpp"
 
-#include "safecell/cell/entry_zones.hpp"
 #include "safecell/closed_loop/controller_setup.hpp"
+#include "safecell/closed_loop/fence_walk.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,9 +15,6 @@ constexpr double kStand_s = 4.0;  // standing next to the arm, reaching towards 
 // there); reaching out, their hand comes into it.
 Eigen::Vector2d stand_at() { return {1.65, -0.9}; }
 
-constexpr double kFenceInset_m = 0.3;  // people walk this far inside the walls
-constexpr double kOutside_m = 0.6;     // and start and end this far outside an entry
-
 Eigen::Vector2d corner(const CellModel& cell, double sx, double sy) {
   return {sx * (cell.config.size_m[0] / 2.0 - kFenceInset_m),
           sy * (cell.config.size_m[1] / 2.0 - kFenceInset_m)};
@@ -27,13 +24,16 @@ PersonVisitPlan demo_visit(const CellModel& cell, double enters_s) {
   PersonVisitPlan plan;
   plan.enters_s = enters_s;
   if (cell.config.entries) {
-    // In at the first entry, along the fence by the (-x, -y) corner to the arm's side, and back
-    // out the same way.
-    const EntryConfig& door = cell.config.entries->front();
-    const Eigen::Vector2d outside = entry_floor_point(cell.config, door, 0.5, -kOutside_m);
-    const Eigen::Vector2d inside = entry_floor_point(cell.config, door, 0.5, kFenceInset_m);
-    plan.approach_m = {outside, inside, corner(cell, -1, -1), corner(cell, 1, -1), stand_at()};
-    plan.leave_m = {stand_at(), corner(cell, 1, -1), corner(cell, -1, -1), inside, outside};
+    // In at the first entry, along the fence the shorter way to the (+x, -y) corner, to where
+    // they stand, and back out the same way.
+    const Doorway door = fence_doorway(cell, cell.config.entries->front(), 0.5);
+    const InsetRectangle fence(cell);
+    plan.approach_m = {door.outside_m, door.inside_m};
+    for (const auto& point : fence.walk(door.inside_m, corner(cell, 1, -1))) {
+      plan.approach_m.push_back(point);
+    }
+    plan.approach_m.push_back(stand_at());
+    plan.leave_m.assign(plan.approach_m.rbegin(), plan.approach_m.rend());
   } else {
     plan.approach_m = {corner(cell, 1, -1), stand_at()};
     plan.leave_m = {stand_at(), corner(cell, 1, 1)};

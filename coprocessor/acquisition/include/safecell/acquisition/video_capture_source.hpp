@@ -25,8 +25,16 @@ namespace safecell {
 
 class VideoCaptureSource final : public CameraSource {
  public:
-  // Opens the capture now; see opened().
-  VideoCaptureSource(std::string camera_name, cv::Size frame_size, std::string spec);
+  enum class Kind { kDevice, kPipeline, kStream, kFile };
+
+  // What `spec` reads as by the rules above.
+  [[nodiscard]] static Kind kind_of(const std::string& spec);
+
+  // Opens the capture now, `spec` read as kind_of(spec); see opened().
+  VideoCaptureSource(std::string camera_name, cv::Size frame_size, const std::string& spec);
+  // Opens `spec` as `kind`, whatever it looks like (a cell file says which kind it means: a
+  // video file named "0" or with a '!' in its path stays a file). A kDevice spec must be digits.
+  VideoCaptureSource(std::string camera_name, cv::Size frame_size, Kind kind, std::string spec);
   ~VideoCaptureSource() override;
   VideoCaptureSource(const VideoCaptureSource&) = delete;
   VideoCaptureSource& operator=(const VideoCaptureSource&) = delete;
@@ -43,8 +51,6 @@ class VideoCaptureSource final : public CameraSource {
   HealthReport retrieve(SourceFrame& frame) override;
 
  private:
-  enum class Kind { kDevice, kPipeline, kStream, kFile };
-
   void open();
 
   std::string name_;
