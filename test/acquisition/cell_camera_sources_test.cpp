@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
 #include "safecell/acquisition/frame_set_acquirer.hpp"
@@ -51,6 +53,55 @@ TEST(CellCameraSources, FramesOfAFolderOfPngFilesAndAnUnknownViewForAMissingFold
     EXPECT_EQ(set.frames[1].view.fault, CameraFault::kUnavailable);
   }
   EXPECT_FALSE(acquirer.acquire().frames[0].known()) << "the folder has run out";
+}
+
+// A folder of three frames recorded at `first_s`, + 0.1 s, + 0.2 s, with its frame_times.csv.
+void record_folder(const std::filesystem::path& folder, double first_s) {
+  std::filesystem::create_directories(folder);
+  std::ofstream csv(folder / "frame_times.csv");
+  csv << "file,time_s\n";
+  for (int i = 0; i < 3; ++i) {
+    const std::string file = "frame_" + std::to_string(i) + ".png";
+    ASSERT_TRUE(
+        cv::imwrite((folder / file).string(), cv::Mat(48, 64, CV_8UC1, cv::Scalar(40 + 10 * i))));
+    csv << file << ',' << first_s + 0.1 * i << '\n';
+  }
+}
+
+double steady_now_s() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+TEST(CellCameraSources, RecordingsPlayedLiveKeepTheirPaceOnTheSteadyClock) {
+  const test::ScratchFolder scratch;
+  record_folder(scratch.path() / "frames" / "cam0", 1000.0);
+  record_folder(scratch.path() / "frames" / "cam1", 1000.01);  // 10 ms after cam0
+  const CellModel cell = load_cell_model(parse_cell_yaml(
+      cell_yaml("{folder: frames/cam0}", "{folder: frames/cam1}"), "cell.yaml", scratch.path()));
+
+  // Control: read as fast as possible, the frames carry the recording's own times.
+  FrameSetAcquirer as_read(cell_camera_sources(cell));
+  EXPECT_DOUBLE_EQ(as_read.acquire().frames[1].exposure_s, 1000.01);
+
+  FrameSetAcquirer live(cell_camera_sources(cell, Recordings::kLive));
+  const double started_s = steady_now_s();
+  std::vector<FrameSet> sets;
+  for (int i = 0; i < 3; ++i) sets.push_back(live.acquire());
+  const double ended_s = steady_now_s();
+  for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t c = 0; c < 2; ++c) {
+      const CameraFrame& frame = sets[i].frames[c];
+      ASSERT_TRUE(frame.known()) << frame.view.detail;
+      // On the steady clock, during the replay, at the recorded offsets to the first frame.
+      EXPECT_GE(frame.exposure_s, started_s) << "set " << i << " camera " << c;
+      EXPECT_LE(frame.exposure_s, ended_s) << "set " << i << " camera " << c;
+      const double recorded_offset_s = 0.1 * static_cast<double>(i) + 0.01 * static_cast<double>(c);
+      EXPECT_NEAR(frame.exposure_s - sets[0].frames[0].exposure_s, recorded_offset_s, 1e-6)
+          << "set " << i << " camera " << c;
+    }
+  }
+  // The replay waited for the last frame's recorded time: 0.21 s after the first.
+  EXPECT_GE(ended_s - started_s, 0.21 - 1e-3);
 }
 
 TEST(CellCameraSources, AVideoFileIsOpenedAsAFileWhateverItsName) {

@@ -209,6 +209,33 @@ std::vector<FaultClass> fault_classes() {
 
 class LinkUnderFaults : public ::testing::TestWithParam<FaultClass> {};
 
+TEST(LinkSession, TheControllersWatchdogAndDataAgeAreTheSessions) {
+  const test::DemoMaps& demo = test::demo_maps();
+  ControllerLinkConfig controller_config;
+  controller_config.grid_fingerprint = demo.grid.fingerprint();
+  controller_config.lut_fingerprint = kLutFingerprint;
+  controller_config.watchdog_ns = 180'000'000;
+  controller_config.max_data_age_ns = 220'000'000;
+  ControllerSide controller(demo.grid, controller_config);
+
+  CoprocessorLinkConfig link_config;
+  link_config.cell_count = demo.grid.cell_count();
+  link_config.grid_fingerprint = demo.grid.fingerprint();
+  link_config.lut_fingerprint = kLutFingerprint;
+  link_config.watchdog_us = 100'000;
+  link_config.max_data_age_us = 150'000;
+  UdpTransport transport({"127.0.0.1", 0}, {"127.0.0.1", controller.port()});
+  controller.talk_to(transport.local_port());
+  controller.start();
+  CoprocessorLink link(link_config, transport);
+  // Before the session, the values given.
+  EXPECT_EQ(link.config().watchdog_us, 100'000U);
+  link.open(2s);
+  EXPECT_EQ(link.config().watchdog_us, 180'000U);
+  EXPECT_EQ(link.config().max_data_age_us, 220'000U);
+  controller.stop();
+}
+
 TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
   const FaultClass& faults = GetParam();
   const test::DemoMaps& demo = test::demo_maps();

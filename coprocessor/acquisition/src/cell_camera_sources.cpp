@@ -1,13 +1,16 @@
 #include "safecell/acquisition/cell_camera_sources.hpp"
 
 #include "safecell/acquisition/image_folder_source.hpp"
+#include "safecell/acquisition/live_replay_source.hpp"
 #include "safecell/acquisition/video_capture_source.hpp"
 #include "safecell/cell/cell_error.hpp"
 
 namespace safecell {
 
-std::vector<std::unique_ptr<CameraSource>> cell_camera_sources(const CellModel& cell) {
+std::vector<std::unique_ptr<CameraSource>> cell_camera_sources(const CellModel& cell,
+                                                               Recordings recordings) {
   std::vector<std::unique_ptr<CameraSource>> sources;
+  const auto replay_clock = std::make_shared<ReplayClock>();  // one for the whole recording
   for (std::size_t c = 0; c < cell.config.cameras.size(); ++c) {
     const CameraConfig& camera = cell.config.cameras[c];
     if (!camera.source) {
@@ -42,6 +45,11 @@ std::vector<std::unique_ptr<CameraSource>> cell_camera_sources(const CellModel& 
         sources.push_back(
             std::make_unique<VideoCaptureSource>(camera.name, size, Video::kStream, spec));
         break;
+    }
+    const bool recorded =
+        camera.source->kind == Kind::kImageFolder || camera.source->kind == Kind::kVideoFile;
+    if (recorded && recordings == Recordings::kLive) {
+      sources.back() = std::make_unique<LiveReplaySource>(std::move(sources.back()), replay_clock);
     }
   }
   return sources;

@@ -172,6 +172,10 @@ void CoprocessorLink::handle_handshake_answer(const FrameView& frame) {
   const v1::Handshake& answer = message.handshake();
   if (answer.accepted()) {
     accepted_ = true;
+    // The controller's watchdog and data age are the session's: the joint stream is checked
+    // against what the controller itself keeps to (its configuration, not this end's guess).
+    if (answer.watchdog_us() > 0) config_.watchdog_us = answer.watchdog_us();
+    if (answer.max_data_age_us() > 0) config_.max_data_age_us = answer.max_data_age_us();
     checker_ =
         FrameChecker({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_},
                      kUnsyncedLimits, now(), frame.header.sequence);

@@ -11,10 +11,17 @@
 
 namespace safecell {
 
+// How a camera recorded into an image folder or a video file is played.
+enum class Recordings {
+  kAsFastAsRead,  // each frame as soon as it is asked for, stamped with its recorded time
+  kLive,          // at its recorded pace, stamped on the steady clock (live_replay_source.hpp)
+};
+
 // One source per camera, in the cell's order. A source that cannot be opened stays closed and
 // reports kUnavailable on each grab (the view is unknown; the service carries on and the
 // controller stops when too few views are known). Throws CellError naming the file and line of a
 // camera without a `source:`.
-[[nodiscard]] std::vector<std::unique_ptr<CameraSource>> cell_camera_sources(const CellModel& cell);
+[[nodiscard]] std::vector<std::unique_ptr<CameraSource>> cell_camera_sources(
+    const CellModel& cell, Recordings recordings = Recordings::kAsFastAsRead);
 
 }  // namespace safecell

@@ -78,6 +78,9 @@ class CoprocessorLink {
   std::size_t poll(std::chrono::microseconds wait);
 
   std::uint64_t session_id() const { return session_id_; }
+  // The configuration given, with the controller's watchdog and maximum data age once it has
+  // accepted the session (its handshake answer names them).
+  const CoprocessorLinkConfig& config() const { return config_; }
   // Why the controller refused the session, once it has (open() then throws).
   const std::optional<std::string>& refused_because() const { return refused_because_; }
   const ClockSync& clock_sync() const { return clock_sync_; }
