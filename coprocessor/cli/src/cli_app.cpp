@@ -12,6 +12,7 @@
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
 #include "safecell/cli/luts_record_command.hpp"
+#include "safecell/cli/run_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/cli/validate_command.hpp"
 #include "safecell/closed_loop/controller_setup.hpp"
@@ -387,6 +388,60 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     }
     action = [&] { exit_code = run_validate(validate, out, err); };
   });
+
+  RunOptions run;
+  CLI::App* run_command = app.add_subcommand(
+      "run",
+      "The coprocessor service on the cell file's cameras (each camera's source: a capture "
+      "device, a video file, an image folder with frame_times.csv, a GStreamer pipeline or an "
+      "RTSP URL), sending its maps to a safecell-controller over UDP. Recordings play at their "
+      "recorded pace. Stops on SIGINT or SIGTERM, after --seconds, or when every camera has "
+      "stopped; the controller then gets a stop request and holds the robot");
+  run_command->add_option("--cell", run.cell_path, "Cell file (YAML) whose cameras name a source")
+      ->required();
+  run_command->add_option("--lut-cache", run.lut_cache,
+                          "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                          "~/.cache/safecell");
+  run_command
+      ->add_option("--controller", run.controller,
+                   "The controller's UDP address, HOST:PORT (its link.listen)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--listen", run.listen,
+                   "This end's UDP address, HOST:PORT (the controller's link.coprocessor)")
+      ->capture_default_str();
+  run_command->add_option("--reference", run.reference_dir,
+                          "Folder of reference images, <camera>.png each (the empty cell); "
+                          "without it they are recorded at the start, the cell empty of people");
+  run_command
+      ->add_option("--reference-sets", run.reference_sets,
+                   "Frame sets whose median is the recorded reference")
+      ->capture_default_str();
+  run_command->add_option("--seconds", run.seconds, "Stop after this long (0: until stopped)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--out", run.out_dir,
+                   "Folder for the recorded reference and "
+                   "run_summary.json")
+      ->capture_default_str();
+  run_command
+      ->add_option("--max-acceleration", run.max_acceleration_rad_s2,
+                   "The robot's largest joint acceleration, rad/s^2 (bounds the joint stream's "
+                   "interpolation error)")
+      ->capture_default_str();
+  run_command->add_option("--fps", run.fps, "The cameras' frame rate (announced to the controller)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--sync-error", run.sync_error_ms,
+                   "How far apart the cameras' exposures may be, ms (hardware-triggered cameras: "
+                   "a few; free-running ones up to a frame period, which widens the robot's "
+                   "removal)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--connect-timeout", run.connect_timeout_s,
+                   "Seconds to wait for the controller's answer")
+      ->capture_default_str();
+  run_command->callback([&] { action = [&] { exit_code = run_service(run, out, err); }; });
 
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(

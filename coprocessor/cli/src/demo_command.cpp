@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <iostream>
 #include <random>
-#include <unordered_map>
 
 #include "demo_report.hpp"
 #include "progress_bar.hpp"
@@ -16,6 +15,7 @@
 #include "safecell/closed_loop/live_simulated_cameras.hpp"
 #include "safecell/validation/configuration_strata.hpp"
 #include "scene_options.hpp"
+#include "service_status.hpp"
 #include "simulated_sensing.hpp"
 
 namespace safecell {
@@ -51,27 +51,6 @@ void check_options(const DemoOptions& options) {
   }
 }
 
-std::string status_line(std::size_t index, double time_s, const ServiceCycle& cycle,
-                        std::uint32_t cell_count, const JointRecord* joints,
-                        double last_latency_ms) {
-  std::string blocked;
-  for (const std::size_t count : cycle.blocked_per_camera) {
-    blocked += (blocked.empty() ? "" : "/") + std::to_string(count);
-  }
-  std::string status = "cycle " + std::to_string(index) + "  t " + fixed(time_s, 1) +
-                       " s  blocked " + (blocked.empty() ? "-" : blocked) + "  forbidden " +
-                       grouped(cycle.forbidden_cells) + " (" +
-                       fixed(100.0 * static_cast<double>(cycle.forbidden_cells) / cell_count, 1) +
-                       " %)  " + (joints ? state_name(joints->state) : "waiting");
-  if (joints) {
-    status += "  scale " + fixed(joints->speed_scale, 2);
-    if (joints->critical_joint > 0) status += "  joint " + std::to_string(joints->critical_joint);
-  }
-  status += "  latency " + (last_latency_ms >= 0.0 ? fixed(last_latency_ms, 1) + " ms" : "-");
-  if (!cycle.all_forbidden.empty()) status += "  ALL FORBIDDEN: " + cycle.all_forbidden;
-  return status;
-}
-
 }  // namespace
 
 int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
@@ -98,20 +77,11 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   run.seconds = options.seconds;
   run.fps = options.fps;
   ClosedLoopRecord& record = run.record;
-  std::unordered_map<std::uint64_t, double> exposure_of_version;  // for the live latency
-  double last_latency_ms = -1.0;
+  AppliedMapLatency latency;  // for the status line
   session.link().on_joint_state([&](const ReceivedJointState& received) {
     if (received.coprocessor_time_ns == 0) return;
     JointRecord sample = joint_record(received, session.link().clock_sync(), start_ns);
-    if (record.joints.empty() ||
-        record.joints.back().applied_map_version != sample.applied_map_version) {
-      const auto exposure = exposure_of_version.find(sample.applied_map_version);
-      if (exposure != exposure_of_version.end()) {
-        const double applied_s =
-            sample.applied_map_time_s > 0.0 ? sample.applied_map_time_s : sample.time_s;
-        last_latency_ms = (applied_s - exposure->second) * 1e3;
-      }
-    }
+    latency.joint_state(sample, record.joints.empty() ? nullptr : &record.joints.back());
     record.joints.push_back(std::move(sample));
   });
 
@@ -191,7 +161,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
     cycle_record.person_present = !cameras.last_scene().humans.empty();
     cycle_record.all_forbidden = cycle.all_forbidden;
     record.cycles.push_back(cycle_record);
-    exposure_of_version[cycle.map_version] = time_s;
+    latency.sent(cycle.map_version, time_s);
 
     if (cycle.pose_known && cycle.all_forbidden.empty() && options.check_every > 0 &&
         index % static_cast<std::size_t>(options.check_every) == 0) {
@@ -226,8 +196,8 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
       run.snapshots.push_back(std::move(snapshot));
     }
     if (time_s >= next_status_s || interactive) {
-      const std::string status =
-          status_line(index, time_s, cycle, sensing.grid.cell_count(), joints, last_latency_ms);
+      const std::string status = service_status_line(
+          index, time_s, cycle, sensing.grid.cell_count(), joints, latency.last_ms());
       if (interactive) {
         err << '\r' << status << "\x1b[K" << std::flush;
       } else {

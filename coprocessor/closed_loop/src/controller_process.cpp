@@ -102,10 +102,15 @@ std::optional<int> ControllerProcess::stop(std::chrono::milliseconds grace) {
     if (!running()) return exit_code_;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  kill();
+  return std::nullopt;
+}
+
+void ControllerProcess::kill() {
+  if (!running()) return;
   std::error_code error;
   child_->process.terminate(error);  // SIGKILL
   child_->process.wait(error);
-  return std::nullopt;
 }
 
 }  // namespace safecell

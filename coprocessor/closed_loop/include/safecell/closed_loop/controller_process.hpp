@@ -39,6 +39,8 @@ class ControllerProcess {
   // SIGTERM, then waits up to `grace` for the exit; kills it after that. Returns the exit code
   // (nullopt when it had to be killed).
   std::optional<int> stop(std::chrono::milliseconds grace);
+  // SIGKILL at once: the program gets no chance to tidy up (what a crash looks like to its peer).
+  void kill();
   // The exit code once it has exited by itself.
   [[nodiscard]] std::optional<int> exit_code() const { return exit_code_; }
 

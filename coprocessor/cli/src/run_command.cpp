@@ -1,0 +1,302 @@
+#include "safecell/cli/run_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "camera_reference.hpp"
+#include "lut_loading.hpp"
+#include "progress_bar.hpp"
+#include "safecell/acquisition/cell_camera_sources.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/cli/text_table.hpp"
+#include "safecell/files/atomic_write.hpp"
+#include "safecell/link/link_errors.hpp"
+#include "safecell/link/udp_transport.hpp"
+#include "safecell/lut/configuration_silhouettes.hpp"
+#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/pipeline/sensing_pipeline.hpp"
+#include "safecell/service/sensing_service.hpp"
+#include "scene_options.hpp"
+#include "service_status.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// The signal that asked the service to stop (0: none yet). Written by the handler only.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void on_stop_signal(int signal) { g_stop_signal = signal; }
+
+// SIGINT and SIGTERM ask the loop to stop (it then sends the controller a stop request) while
+// this object lives; the handlers before it come back after.
+class StopSignals {
+ public:
+  StopSignals()
+      : previous_interrupt_(std::signal(SIGINT, on_stop_signal)),
+        previous_terminate_(std::signal(SIGTERM, on_stop_signal)) {
+    g_stop_signal = 0;
+  }
+  ~StopSignals() {
+    std::signal(SIGINT, previous_interrupt_);
+    std::signal(SIGTERM, previous_terminate_);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+  [[nodiscard]] static std::optional<std::string> received() {
+    const int signal = g_stop_signal;
+    if (signal == 0) return std::nullopt;
+    return signal == SIGINT ? "SIGINT" : "SIGTERM";
+  }
+
+ private:
+  using Handler = void (*)(int);
+  Handler previous_interrupt_;
+  Handler previous_terminate_;
+};
+
+// "HOST:PORT" -> the endpoint; `port_from` is 0 for a local address that may take any port.
+UdpEndpoint endpoint_of(const std::string& option, const std::string& text, int port_from) {
+  const std::size_t colon = text.rfind(':');
+  const std::string expected =
+      "HOST:PORT with a port of " + std::to_string(port_from) + "..65535, e.g. 192.168.10.2:47701";
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) {
+    bad_option(option, text, expected);
+  }
+  const std::string port_text = text.substr(colon + 1);
+  if (port_text.size() > 5 || !std::all_of(port_text.begin(), port_text.end(),
+                                           [](char c) { return c >= '0' && c <= '9'; })) {
+    bad_option(option, text, expected);
+  }
+  const int port = std::stoi(port_text);
+  if (port < port_from || port > 65535) bad_option(option, text, expected);
+  return {text.substr(0, colon), static_cast<unsigned short>(port)};
+}
+
+void check_options(const RunOptions& options) {
+  if (options.cell_path.empty()) {
+    bad_option("--cell", "", "a cell file whose cameras name their source: (see the README)");
+  }
+  if (!(options.seconds >= 0.0 && options.seconds <= 1e7)) {
+    bad_option("--seconds", std::to_string(options.seconds), "0 (until stopped) or a duration");
+  }
+  if (!(options.fps >= 1.0 && options.fps <= 200.0)) {
+    bad_option("--fps", std::to_string(options.fps), "frames per second, 1..200");
+  }
+  if (!(options.max_acceleration_rad_s2 >= 0.1 && options.max_acceleration_rad_s2 <= 1000.0)) {
+    bad_option("--max-acceleration", std::to_string(options.max_acceleration_rad_s2),
+               "rad/s^2, 0.1..1000 (the robot's data sheet; above, not below)");
+  }
+  if (!(options.sync_error_ms >= 0.0 && options.sync_error_ms <= 100.0)) {
+    bad_option("--sync-error", std::to_string(options.sync_error_ms), "ms, 0..100");
+  }
+  if (options.reference_dir.empty() &&
+      (options.reference_sets < 1 || options.reference_sets > 1000)) {
+    bad_option("--reference-sets", std::to_string(options.reference_sets), "1..1000");
+  }
+  if (!(options.connect_timeout_s > 0.0 && options.connect_timeout_s <= 3600.0)) {
+    bad_option("--connect-timeout", std::to_string(options.connect_timeout_s), "s, up to 3600");
+  }
+}
+
+// Opens the session, waiting while the controller does not answer (it may start after us).
+// Returns false when a signal came first.
+bool open_session(CoprocessorLink& link, const RunOptions& options, std::ostream& err) {
+  const auto give_up = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(options.connect_timeout_s));
+  bool said_waiting = false;
+  while (true) {
+    try {
+      link.open(std::chrono::milliseconds(500));
+      return true;
+    } catch (const LinkSetupError& error) {
+      if (link.refused_because()) throw;
+      if (Clock::now() > give_up) {
+        throw LinkSetupError(std::string(error.what()) + " (--controller " + options.controller +
+                             ", waited " + fixed(options.connect_timeout_s, 0) + " s)");
+      }
+    }
+    if (StopSignals::received()) return false;
+    if (!said_waiting) {
+      err << "waiting for the controller at " << options.controller << " ...\n";
+      said_waiting = true;
+    }
+  }
+}
+
+// Every camera has stopped delivering (the recordings have ended, the devices are gone).
+std::optional<std::string> all_cameras_stopped(const FrameSet& set) {
+  for (const CameraFrame& frame : set.frames) {
+    if (frame.view.fault != CameraFault::kStopped) return std::nullopt;
+  }
+  return "every camera stopped delivering (" + set.frames.front().view.detail + ")";
+}
+
+struct RunFigures {
+  std::size_t cycles = 0;
+  std::size_t all_forbidden_cycles = 0;
+  std::size_t cycles_short_of_views = 0;  // fewer known views than the camera threshold
+  std::vector<double> features_ms;
+  std::vector<double> fusion_ms;
+};
+
+double percentile(std::vector<double> values, double share) {
+  if (values.empty()) return 0.0;
+  const auto at = static_cast<std::size_t>(share * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at), values.end());
+  return values[at];
+}
+
+void write_run_summary(const fs::path& file, const RunFigures& figures, double seconds,
+                       const std::string& stopped_because, const CoprocessorLink& link) {
+  nlohmann::ordered_json summary;
+  summary["cycles"] = figures.cycles;
+  summary["seconds"] = seconds;
+  summary["all_forbidden_cycles"] = figures.all_forbidden_cycles;
+  summary["cycles_short_of_views"] = figures.cycles_short_of_views;
+  summary["features_ms_p99"] = percentile(figures.features_ms, 0.99);
+  summary["fusion_ms_p99"] = percentile(figures.fusion_ms, 0.99);
+  summary["controller_faults"] = link.controller_faults().size();
+  summary["stopped_because"] = stopped_because;
+  write_file_atomically(file, summary.dump(2) + "\n");
+}
+
+}  // namespace
+
+int run_service(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  check_options(options);
+  const StopSignals signals;
+  const UdpEndpoint controller = endpoint_of("--controller", options.controller, 1);
+  const UdpEndpoint listen = endpoint_of("--listen", options.listen, 0);
+  const fs::path out_dir(options.out_dir);
+  fs::create_directories(out_dir);
+
+  const CellModel cell = load_cell_model(load_cell_file(options.cell_path));
+  const CspaceGrid grid = make_grid(cell.config);
+  const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  FrameSetAcquirer cameras(cell_camera_sources(cell, Recordings::kLive));
+
+  std::vector<cv::Mat> reference;
+  if (options.reference_dir.empty()) {
+    reference = record_reference_images(cameras, options.reference_sets, err);
+    write_reference_images(out_dir / "reference", cell, reference);
+    err << "reference images written to " << (out_dir / "reference").string()
+        << " (give them as --reference next time)\n";
+  } else {
+    reference = read_reference_images(options.reference_dir, cell);
+  }
+  FusionSettings fusion;
+  fusion.camera_threshold = cell.camera_threshold;
+  fusion.sync_error_s = options.sync_error_ms * 1e-3;
+  SensingPipeline pipeline(cell, grid, luts.set, silhouettes, reference, {}, fusion);
+
+  UdpTransport transport(listen, controller);
+  CoprocessorLinkConfig link_config;
+  link_config.cell_count = grid.cell_count();
+  link_config.grid_fingerprint = grid.fingerprint();
+  link_config.lut_fingerprint = luts.set.fingerprint;
+  link_config.map_cycle_us = static_cast<std::uint32_t>(1e6 / options.fps);
+  CoprocessorLink link(link_config, transport);
+  err << "link: " << listen.address << ':' << transport.local_port() << " -> " << options.controller
+      << " (grid fingerprint " << std::hex << grid.fingerprint() << ", LUT fingerprint "
+      << luts.set.fingerprint << std::dec << ")\n";
+  if (!open_session(link, options, err)) {
+    err << "stopped (" << *StopSignals::received() << ") before the controller answered\n";
+    return 0;
+  }
+  err << "session open: watchdog " << link.config().watchdog_us / 1000 << " ms, data age "
+      << link.config().max_data_age_us / 1000 << " ms (the controller's)\n";
+
+  SensingServiceSettings service_settings;
+  service_settings.joints.max_acceleration_rad_s2.assign(grid.joint_count(),
+                                                         options.max_acceleration_rad_s2);
+  service_settings.widening_budget_m =
+      removal_widening_m(*cell.robot, grid, 0.0, fusion.sync_error_s).value_or(0.02);
+  service_settings.camera_threshold = static_cast<std::uint32_t>(cell.camera_threshold);
+  SensingService service(grid, pipeline, link, service_settings);
+
+  const std::uint64_t start_ns = steady_now_ns();
+  const auto seconds_since_start = [start_ns](std::uint64_t ns) {
+    return (static_cast<double>(ns) - static_cast<double>(start_ns)) * 1e-9;
+  };
+  std::optional<JointRecord> last_joints;
+  AppliedMapLatency latency;
+  link.on_joint_state([&](const ReceivedJointState& received) {
+    if (received.coprocessor_time_ns == 0) return;
+    JointRecord sample = joint_record(received, link.clock_sync(), start_ns);
+    latency.joint_state(sample, last_joints ? &*last_joints : nullptr);
+    last_joints = std::move(sample);
+  });
+
+  const bool interactive = &err == &std::cerr && ProgressBar::stderr_is_terminal();
+  RunFigures figures;
+  std::size_t faults_reported = 0;
+  double next_status_s = 0.0;
+  std::string stopped_because;
+  while (true) {
+    if (const auto signal = StopSignals::received()) {
+      stopped_because = *signal;
+      break;
+    }
+    if (options.seconds > 0.0 && seconds_since_start(steady_now_ns()) >= options.seconds) {
+      stopped_because = "--seconds " + fixed(options.seconds, 1) + " ran out";
+      break;
+    }
+    const FrameSet set = cameras.acquire();
+    if (const auto stopped = all_cameras_stopped(set)) {
+      stopped_because = *stopped;
+      break;
+    }
+    // The joint stream up to now: the pose at the exposure is interpolated, not extrapolated.
+    service.serve_link(Clock::now());
+    const ServiceCycle& cycle = service.process(set);
+    ++figures.cycles;
+    if (!cycle.all_forbidden.empty()) ++figures.all_forbidden_cycles;
+    if (cycle.known_views < service_settings.camera_threshold) ++figures.cycles_short_of_views;
+    figures.features_ms.push_back(cycle.times.features_ms);
+    figures.fusion_ms.push_back(cycle.times.fusion_ms);
+    const double time_s = seconds_since_start(cycle.exposure_ns);
+    latency.sent(cycle.map_version, time_s);
+    for (; faults_reported < link.controller_faults().size(); ++faults_reported) {
+      const v1::FaultReport& fault = link.controller_faults()[faults_reported];
+      err << "controller fault: " << v1::FaultCause_Name(fault.cause()) << ": " << fault.detail()
+          << '\n';
+    }
+    if (time_s >= next_status_s || interactive) {
+      const std::string status =
+          service_status_line(figures.cycles - 1, time_s, cycle, grid.cell_count(),
+                              last_joints ? &*last_joints : nullptr, latency.last_ms());
+      if (interactive) {
+        err << '\r' << status << "\x1b[K" << std::flush;
+      } else {
+        err << status << '\n';
+        next_status_s = time_s + 1.0;
+      }
+    }
+  }
+  if (interactive) err << '\n';
+
+  // A clean stop: the controller holds the robot on the request (latched until its operator
+  // acknowledges) instead of finding the maps gone.
+  link.send_stop_request(v1::FAULT_CAUSE_OPERATOR, "safecell run stopped: " + stopped_because);
+  service.serve_link(Clock::now() + std::chrono::milliseconds(50));
+  const double seconds = seconds_since_start(steady_now_ns());
+  write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, link);
+  out << "stopped: " << stopped_because << "; the controller was asked to stop the robot\n"
+      << "cycles " << figures.cycles << " in " << fixed(seconds, 1) << " s, all-forbidden "
+      << figures.all_forbidden_cycles << ", short of views " << figures.cycles_short_of_views
+      << "; summary " << (out_dir / "run_summary.json").string() << '\n';
+  return 0;
+}
+
+}  // namespace safecell

@@ -1,0 +1,37 @@
+#include "service_status.hpp"
+
+#include "safecell/cli/text_table.hpp"
+
+namespace safecell {
+
+std::string service_status_line(std::size_t index, double time_s, const ServiceCycle& cycle,
+                                std::uint32_t cell_count, const JointRecord* joints,
+                                double last_latency_ms) {
+  std::string blocked;
+  for (const std::size_t count : cycle.blocked_per_camera) {
+    blocked += (blocked.empty() ? "" : "/") + std::to_string(count);
+  }
+  std::string status = "cycle " + std::to_string(index) + "  t " + fixed(time_s, 1) +
+                       " s  blocked " + (blocked.empty() ? "-" : blocked) + "  forbidden " +
+                       grouped(cycle.forbidden_cells) + " (" +
+                       fixed(100.0 * static_cast<double>(cycle.forbidden_cells) / cell_count, 1) +
+                       " %)  " + (joints ? state_name(joints->state) : "waiting");
+  if (joints) {
+    status += "  scale " + fixed(joints->speed_scale, 2);
+    if (joints->critical_joint > 0) status += "  joint " + std::to_string(joints->critical_joint);
+  }
+  status += "  latency " + (last_latency_ms >= 0.0 ? fixed(last_latency_ms, 1) + " ms" : "-");
+  if (!cycle.all_forbidden.empty()) status += "  ALL FORBIDDEN: " + cycle.all_forbidden;
+  return status;
+}
+
+void AppliedMapLatency::joint_state(const JointRecord& sample, const JointRecord* previous) {
+  if (previous != nullptr && previous->applied_map_version == sample.applied_map_version) return;
+  const auto exposure = exposure_of_.find(sample.applied_map_version);
+  if (exposure == exposure_of_.end()) return;
+  const double applied_s =
+      sample.applied_map_time_s > 0.0 ? sample.applied_map_time_s : sample.time_s;
+  last_ms_ = (applied_s - exposure->second) * 1e3;
+}
+
+}  // namespace safecell

@@ -1,0 +1,273 @@
+// `safecell run`: the service on a cell file's cameras, here folders of PNG files the simulator
+// rendered (with their frame_times.csv), played at their recorded pace, and a real
+// safecell-controller process on loopback UDP. The controller must take the maps, and at the end
+// it must see a stop request, not a silent loss of the link: when the recording ends, on SIGTERM
+// to the `safecell` program, and (the negative control) not when that program is killed.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <thread>
+
+#include <unistd.h>
+
+#include "cli_run.hpp"
+#include "coarse_cell.hpp"
+#include "safecell/cell/cell_file.hpp"
+#include "safecell/cell/cell_grid.hpp"
+#include "safecell/closed_loop/controller_process.hpp"
+#include "safecell/closed_loop/controller_setup.hpp"
+#include "safecell/sim/cell_simulation.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+constexpr double kFps = 15.0;
+constexpr int kSets = 60;  // 4 s of recording
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Waits up to `limit` for `file` to contain `text`.
+bool wait_for_text(const fs::path& file, const std::string& text, std::chrono::seconds limit) {
+  const auto give_up = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < give_up) {
+    if (read_text(file).find(text) != std::string::npos) return true;
+    std::this_thread::sleep_for(20ms);
+  }
+  return false;
+}
+
+// The coarse default cell whose four cameras are folders `frames/<camera>` beside the file; the
+// robot held still at `q` in every frame; the first frame set also as a reference folder.
+struct Recording {
+  fs::path cell_file;
+  fs::path cache;
+  fs::path reference;
+  std::vector<double> q;
+  std::string lut_fingerprint;  // as `safecell luts build --json` prints it
+};
+
+Recording record_cell(const fs::path& folder) {
+  Recording recording;
+  std::string yaml = read_text(test::write_coarse_cell(folder));
+  for (int c = 0; c < 4; ++c) {
+    const std::string camera = "  - name: cam" + std::to_string(c) + "\n";
+    const std::size_t line_end = yaml.find('\n', yaml.find(camera) + camera.size());
+    yaml.insert(line_end + 1, "    source: {folder: frames/cam" + std::to_string(c) + "}\n");
+  }
+  recording.cell_file = folder / "cell.yaml";
+  std::ofstream(recording.cell_file) << yaml;
+  recording.cache = folder / "cache";
+  recording.reference = folder / "reference";
+
+  const CellModel cell = load_cell_model(load_cell_file(recording.cell_file));
+  const CspaceGrid grid = make_grid(cell.config);
+  recording.q = inside_grid(grid, std::vector<double>(grid.joint_count(), 0.3));
+  SimulatedCell sim = simulate_cell(cell, SensorSettings{2.0, 0.0, 30.0, 5});
+  std::vector<std::ofstream> times;
+  for (std::size_t c = 0; c < sim.camera_count(); ++c) {
+    fs::create_directories(folder / "frames" / sim.camera(c).name());
+    times.emplace_back(folder / "frames" / sim.camera(c).name() / "frame_times.csv");
+    times.back() << "file,time_s\n";
+  }
+  fs::create_directories(recording.reference);
+  for (int k = 0; k < kSets; ++k) {
+    const double time_s = 500.0 + k / kFps;
+    const auto frames =
+        sim.render(SimScene{recording.q, {}}, static_cast<std::uint64_t>(k), time_s);
+    for (std::size_t c = 0; c < frames.size(); ++c) {
+      const std::string name = sim.camera(c).name();
+      const std::string file = "frame_" + std::to_string(1000 + k) + ".png";
+      EXPECT_TRUE(cv::imwrite((folder / "frames" / name / file).string(), frames[c]));
+      times[c] << file << ',' << std::to_string(time_s) << '\n';
+      if (k == 0) {
+        EXPECT_TRUE(cv::imwrite((recording.reference / (name + ".png")).string(), frames[c]));
+      }
+    }
+  }
+  const test::CliRun luts =
+      test::safecell_cli({"luts", "build", "--cell", recording.cell_file.string(), "--out",
+                          recording.cache.string(), "--json"});
+  EXPECT_EQ(luts.exit_code, 0) << luts.err;
+  recording.lut_fingerprint = nlohmann::json::parse(luts.out)["fingerprint"].get<std::string>();
+  return recording;
+}
+
+// A safecell-controller holding the robot at the recording's pose, listening on a free port and
+// answering the coprocessor at `coprocessor_port`.
+class Controller {
+ public:
+  Controller(const Recording& recording, const fs::path& folder, std::uint16_t coprocessor_port)
+      : log_(folder / "controller.log") {
+    const CellModel cell = load_cell_model(load_cell_file(recording.cell_file));
+    const CspaceGrid grid = make_grid(cell.config);
+    ControllerSetup setup;
+    setup.joints = comfortable_joint_limits(*cell.robot, grid);
+    setup.start_rad = recording.q;
+    setup.listen_port = free_udp_port();
+    setup.coprocessor_port = coprocessor_port;
+    setup.lut_fingerprint = std::stoull(recording.lut_fingerprint, nullptr, 16);
+    listen_port_ = setup.listen_port;
+    const fs::path config = folder / "controller.yaml";
+    std::ofstream(config) << controller_config_yaml(grid, setup);
+    process_ = std::make_unique<ControllerProcess>(
+        find_controller_program(""),
+        std::vector<std::string>{"--config", config.string(), "--status-hz", "10"}, log_);
+  }
+  [[nodiscard]] std::string address() const { return "127.0.0.1:" + std::to_string(listen_port_); }
+  [[nodiscard]] const fs::path& log() const { return log_; }
+  ControllerProcess& process() { return *process_; }
+
+ private:
+  fs::path log_;
+  std::uint16_t listen_port_ = 0;
+  std::unique_ptr<ControllerProcess> process_;
+};
+
+class RunCommand : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scratch_ =
+        new fs::path(fs::temp_directory_path() / ("safecell-run-" + std::to_string(::getpid())));
+    fs::remove_all(*scratch_);
+    fs::create_directories(*scratch_);
+    recording_ = new Recording(record_cell(*scratch_));
+  }
+  static void TearDownTestSuite() {
+    delete recording_;
+    fs::remove_all(*scratch_);
+    delete scratch_;
+  }
+  static const Recording& recording() { return *recording_; }
+  static fs::path folder(const std::string& name) {
+    const fs::path path = *scratch_ / name;
+    fs::create_directories(path);
+    return path;
+  }
+
+ private:
+  static fs::path* scratch_;  // the recording and every test's folder, removed at the end
+  static Recording* recording_;
+};
+
+fs::path* RunCommand::scratch_ = nullptr;
+Recording* RunCommand::recording_ = nullptr;
+
+std::vector<std::string> run_arguments(const Recording& recording, const Controller& controller,
+                                       std::uint16_t listen_port, const fs::path& out) {
+  return {"run",
+          "--cell",
+          recording.cell_file.string(),
+          "--lut-cache",
+          recording.cache.string(),
+          "--controller",
+          controller.address(),
+          "--listen",
+          "127.0.0.1:" + std::to_string(listen_port),
+          "--out",
+          out.string(),
+          "--fps",
+          "15"};
+}
+
+TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
+  const fs::path out = folder("to-the-end");
+  const std::uint16_t port = free_udp_port();
+  Controller controller(recording(), out, port);
+  auto arguments = run_arguments(recording(), controller, port, out);
+  arguments.insert(arguments.end(), {"--reference-sets", "5"});
+  const test::CliRun run = test::safecell_cli(arguments);
+  ASSERT_EQ(run.exit_code, 0) << run.err << "\ncontroller:\n" << read_text(controller.log());
+  EXPECT_NE(run.out.find("stopped: every camera stopped delivering"), std::string::npos) << run.out;
+  EXPECT_NE(run.err.find("session open"), std::string::npos) << run.err;
+
+  // The recorded reference was written for the next run.
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_TRUE(fs::exists(out / "reference" / ("cam" + std::to_string(c) + ".png")));
+  }
+  const auto summary = nlohmann::json::parse(read_text(out / "run_summary.json"));
+  // Every set after the reference's five went through the pipeline to the controller, all four
+  // views known; the robot's pose was known for some (the joint stream came back).
+  EXPECT_EQ(summary["cycles"].get<int>(), kSets - 5) << summary.dump(2);
+  EXPECT_EQ(summary["cycles_short_of_views"].get<int>(), 0);
+  EXPECT_LT(summary["all_forbidden_cycles"].get<int>(), summary["cycles"].get<int>());
+  // The controller took maps and, at the end, the stop request (it holds the robot, latched).
+  EXPECT_TRUE(wait_for_text(controller.log(), "stop requested", 3s)) << read_text(controller.log());
+  EXPECT_NE(read_text(controller.log()).find(" map v"), std::string::npos);
+  controller.process().stop(3s);
+}
+
+TEST_F(RunCommand, SigtermToTheProgramIsAStopRequestAndKillingItIsNot) {
+  for (const bool killed : {false, true}) {
+    SCOPED_TRACE(killed ? "killed (the negative control)" : "SIGTERM");
+    const fs::path out = folder(killed ? "killed" : "sigterm");
+    const std::uint16_t port = free_udp_port();
+    Controller controller(recording(), out, port);
+    auto arguments = run_arguments(recording(), controller, port, out);
+    arguments.insert(arguments.end(), {"--reference", recording().reference.string()});
+    ControllerProcess coprocessor(SAFECELL_PROGRAM, arguments, out / "safecell.log");
+    ASSERT_TRUE(wait_for_text(out / "safecell.log", "cycle 0 ", 60s))
+        << read_text(out / "safecell.log");
+    if (killed) {
+      coprocessor.kill();
+    } else {
+      EXPECT_EQ(coprocessor.stop(5s), 0) << read_text(out / "safecell.log");
+      EXPECT_NE(read_text(out / "safecell.log").find("stopped: SIGTERM"), std::string::npos)
+          << read_text(out / "safecell.log");
+    }
+    // Either way the controller stops the robot: on the request, or when its watchdog finds the
+    // maps gone. Only the request names itself.
+    EXPECT_TRUE(wait_for_text(controller.log(), "fault:", 3s)) << read_text(controller.log());
+    const bool requested = wait_for_text(controller.log(), "stop requested", 1s);
+    EXPECT_EQ(requested, !killed) << read_text(controller.log());
+    controller.process().stop(3s);
+  }
+}
+
+TEST_F(RunCommand, AReferenceImageOfTheWrongSizeIsNamed) {
+  const fs::path reference = folder("bad-reference");
+  for (int c = 0; c < 4; ++c) {
+    const cv::Mat image(c == 2 ? 100 : 576, 704, CV_8UC1, cv::Scalar(90));
+    ASSERT_TRUE(cv::imwrite((reference / ("cam" + std::to_string(c) + ".png")).string(), image));
+  }
+  const test::CliRun run = test::safecell_cli(
+      {"run", "--cell", recording().cell_file.string(), "--lut-cache", recording().cache.string(),
+       "--reference", reference.string(), "--out", folder("bad-reference-out").string()});
+  EXPECT_EQ(run.exit_code, kExitBadInput);
+  EXPECT_NE(run.err.find("cam2.png"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("expected 8-bit gray 704 x 576"), std::string::npos) << run.err;
+}
+
+TEST_F(RunCommand, AControllerThatNeverAnswersIsNamedAfterTheTimeout) {
+  const test::CliRun run = test::safecell_cli(
+      {"run", "--cell", recording().cell_file.string(), "--lut-cache", recording().cache.string(),
+       "--reference", recording().reference.string(), "--controller",
+       "127.0.0.1:" + std::to_string(free_udp_port()), "--listen", "127.0.0.1:0",
+       "--connect-timeout", "1", "--out", folder("no-controller").string()});
+  EXPECT_EQ(run.exit_code, kExitBadInput);
+  EXPECT_NE(run.err.find("waited 1 s"), std::string::npos) << run.err;
+}
+
+TEST_F(RunCommand, BadAddressesAreRefused) {
+  for (const std::string address : {"nohost", "1.2.3.4:", "1.2.3.4:99999", ":80", "a:b"}) {
+    const test::CliRun run = test::safecell_cli(
+        {"run", "--cell", recording().cell_file.string(), "--controller", address});
+    EXPECT_EQ(run.exit_code, kExitBadInput) << address;
+    EXPECT_NE(run.err.find("--controller '" + address + "'"), std::string::npos) << run.err;
+  }
+}
+
+}  // namespace
+}  // namespace safecell
