@@ -14,33 +14,12 @@
 #include "random_camera.hpp"
 #include "safecell/camera/camera_error.hpp"
 #include "safecell/test/property.hpp"
+#include "temp_directory.hpp"
 
 namespace safecell {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A fresh directory, removed with everything in it at the end of the test.
-class TempDirectory {
- public:
-  TempDirectory() {
-    static int counter = 0;
-    path_ = fs::temp_directory_path() / ("safecell-camera-test-" + std::to_string(::getpid()) +
-                                         "-" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  TempDirectory(const TempDirectory&) = delete;
-  TempDirectory& operator=(const TempDirectory&) = delete;
-  ~TempDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 std::string matrix(int rows, int cols, const std::string& data) {
   return "!!opencv-matrix\n   rows: " + std::to_string(rows) +
