@@ -3,8 +3,10 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 
+#include "safecell/camera/camera_error.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cli/bench_command.hpp"
+#include "safecell/cli/camera_import_command.hpp"
 #include "safecell/cli/cell_coverage_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
 #include "safecell/cli/closed_loop_validate_command.hpp"
@@ -389,6 +391,40 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     action = [&] { exit_code = run_validate(validate, out, err); };
   });
 
+  CLI::App* camera = app.add_subcommand("camera", "Camera calibrations");
+  camera->require_subcommand(1);
+  CameraImportOptions import;
+  CLI::App* import_command = camera->add_subcommand(
+      "import",
+      "Turn a calibration made with another tool into this project's calibration files (a cell "
+      "file's calibration:): a ROS camera_info file with the camera's cell pose, or an MC-Calib "
+      "result with its reference camera's cell pose. A pose file holds the extrinsic keys of a "
+      "calibration file only: cell_to_camera_rvec (or _rotation) and cell_to_camera_translation_m");
+  import_command->add_option("--ros", import.ros_file, "A ROS camera_info YAML file")
+      ->check(CLI::ExistingFile);
+  import_command
+      ->add_option("--mc-calib", import.mc_calib_file,
+                   "An MC-Calib result (calibrated_cameras_data.yml)")
+      ->check(CLI::ExistingFile);
+  import_command
+      ->add_option("--pose", import.pose_file,
+                   "Pose file: the camera's cell pose (ROS), or the reference camera's (MC-Calib)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  import_command
+      ->add_option("--units-m", import.units_m,
+                   "MC-Calib: metres per unit of its translations (its board's unit)")
+      ->capture_default_str();
+  import_command
+      ->add_option("--name", import.name,
+                   "The camera's name (ROS), or the stem of the names (MC-Calib: cam0, cam1, ...)")
+      ->capture_default_str();
+  import_command
+      ->add_option("--out", import.out,
+                   "The calibration file to write (ROS), or the folder for them (MC-Calib)")
+      ->required();
+  import_command->callback([&] { action = [&] { run_camera_import(import, out); }; });
+
   RunOptions run;
   CLI::App* run_command = app.add_subcommand(
       "run",
@@ -472,6 +508,9 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const LinkSetupError& error) {
+    err << "error: " << error.what() << '\n';
+    return kExitBadInput;
+  } catch (const CameraError& error) {
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const ClosedLoopSetupError& error) {

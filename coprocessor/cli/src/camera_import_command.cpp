@@ -1,0 +1,51 @@
+#include "safecell/cli/camera_import_command.hpp"
+
+#include <filesystem>
+
+#include "safecell/camera/calibration_file.hpp"
+#include "safecell/camera/calibration_import.hpp"
+#include "safecell/cli/text_table.hpp"
+#include "scene_options.hpp"
+
+namespace safecell {
+namespace {
+
+namespace fs = std::filesystem;
+
+void say_written(const fs::path& file, const PinholeCamera& camera, std::ostream& out) {
+  const Eigen::Vector3d at = camera.position_m();
+  const Eigen::Vector3d axis = camera.camera_to_cell().linear().col(2);
+  out << "wrote " << file.string() << ": camera '" << camera.name() << "', "
+      << camera.intrinsics().width_px << " x " << camera.intrinsics().height_px << " px, at ("
+      << fixed(at.x(), 3) << ", " << fixed(at.y(), 3) << ", " << fixed(at.z(), 3)
+      << ") m in the cell, looking along (" << fixed(axis.x(), 2) << ", " << fixed(axis.y(), 2)
+      << ", " << fixed(axis.z(), 2) << ")\n";
+}
+
+}  // namespace
+
+void run_camera_import(const CameraImportOptions& options, std::ostream& out) {
+  if (options.ros_file.empty() == options.mc_calib_file.empty()) {
+    bad_option("--ros/--mc-calib", options.ros_file + options.mc_calib_file,
+               "exactly one of --ros FILE and --mc-calib FILE");
+  }
+  if (options.name.empty()) bad_option("--name", "", "a camera name");
+  const Eigen::Isometry3d cell_pose = read_cell_pose(options.pose_file);
+  if (!options.ros_file.empty()) {
+    const PinholeCamera camera(options.name, read_ros_camera_info(options.ros_file), cell_pose);
+    write_camera_calibration(options.out, camera);
+    say_written(options.out, camera, out);
+    return;
+  }
+  const auto cameras = read_mc_calib_cameras(options.mc_calib_file, options.units_m);
+  fs::create_directories(options.out);
+  for (const McCalibCamera& imported : cameras) {
+    const std::string name = options.name + std::to_string(imported.index);
+    const PinholeCamera camera = mc_calib_camera_in_cell(imported, cell_pose, name);
+    const fs::path file = fs::path(options.out) / (name + ".yaml");
+    write_camera_calibration(file, camera);
+    say_written(file, camera, out);
+  }
+}
+
+}  // namespace safecell
