@@ -85,6 +85,24 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   EXPECT_EQ(model.blocked_threshold, 24);
 }
 
+// docs/examples/real_cameras: the README's walk-through for real cameras. Its calibrations are
+// example values near the default cell's cameras, each with a source of another kind.
+TEST(CellModel, TheRealCamerasExampleLoads) {
+  const CellModel cell = load_cell_model(
+      load_cell_file(std::filesystem::path(SAFECELL_EXAMPLES_DIR) / "real_cameras" / "cell.yaml"));
+  ASSERT_EQ(cell.cameras.size(), 4U);
+  using Kind = CameraSourceConfig::Kind;
+  const Kind kinds[] = {Kind::kDevice, Kind::kGstreamer, Kind::kStream, Kind::kVideoFile};
+  const auto defaults = default_cameras();
+  for (std::size_t c = 0; c < 4; ++c) {
+    ASSERT_TRUE(cell.config.cameras[c].source.has_value()) << c;
+    EXPECT_EQ(cell.config.cameras[c].source->kind, kinds[c]) << c;
+    EXPECT_LT((cell.cameras[c].position_m() - defaults[c].position_m()).norm(), 1e-9) << c;
+    EXPECT_NE(cell.cameras[c].intrinsics().distortion.k1, 0.0) << c;
+  }
+  EXPECT_EQ(cell.config.entries->size(), 1U);
+}
+
 TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
   const std::string camera =
       "cameras:\n  - {name: a, look_at: {position_m: [2, 2, 3], target_m: [0, 0, 0], "

@@ -1,8 +1,9 @@
 // `safecell run`: the service on a cell file's cameras, here folders of PNG files the simulator
 // rendered (with their frame_times.csv), played at their recorded pace, and a real
-// safecell-controller process on loopback UDP. The controller must take the maps, and at the end
-// it must see a stop request, not a silent loss of the link: when the recording ends, on SIGTERM
-// to the `safecell` program, and (the negative control) not when that program is killed.
+// safecell-controller process on loopback UDP, configured by `safecell controller config`. The
+// controller must take the maps, and at the end it must see a stop request, not a silent loss of
+// the link: when the recording ends, on SIGTERM to the `safecell` program, and (the negative
+// control) not when that program is killed.
 
 #include <gtest/gtest.h>
 
@@ -56,7 +57,6 @@ struct Recording {
   fs::path cache;
   fs::path reference;
   std::vector<double> q;
-  std::string lut_fingerprint;  // as `safecell luts build --json` prints it
 };
 
 Recording record_cell(const fs::path& folder) {
@@ -74,7 +74,8 @@ Recording record_cell(const fs::path& folder) {
 
   const CellModel cell = load_cell_model(load_cell_file(recording.cell_file));
   const CspaceGrid grid = make_grid(cell.config);
-  recording.q = inside_grid(grid, std::vector<double>(grid.joint_count(), 0.3));
+  // Where `safecell controller config` starts the simulated robot.
+  recording.q = inside_grid(grid, std::vector<double>(grid.joint_count(), 0.0));
   SimulatedCell sim = simulate_cell(cell, SensorSettings{2.0, 0.0, 30.0, 5});
   std::vector<std::ofstream> times;
   for (std::size_t c = 0; c < sim.camera_count(); ++c) {
@@ -97,31 +98,23 @@ Recording record_cell(const fs::path& folder) {
       }
     }
   }
-  const test::CliRun luts =
-      test::safecell_cli({"luts", "build", "--cell", recording.cell_file.string(), "--out",
-                          recording.cache.string(), "--json"});
-  EXPECT_EQ(luts.exit_code, 0) << luts.err;
-  recording.lut_fingerprint = nlohmann::json::parse(luts.out)["fingerprint"].get<std::string>();
   return recording;
 }
 
-// A safecell-controller holding the robot at the recording's pose, listening on a free port and
-// answering the coprocessor at `coprocessor_port`.
+// A safecell-controller configured by `safecell controller config` for the cell (the simulated
+// robot held at its start, where the recording shows it), listening on a free port and answering
+// the coprocessor at `coprocessor_port`.
 class Controller {
  public:
   Controller(const Recording& recording, const fs::path& folder, std::uint16_t coprocessor_port)
-      : log_(folder / "controller.log") {
-    const CellModel cell = load_cell_model(load_cell_file(recording.cell_file));
-    const CspaceGrid grid = make_grid(cell.config);
-    ControllerSetup setup;
-    setup.joints = comfortable_joint_limits(*cell.robot, grid);
-    setup.start_rad = recording.q;
-    setup.listen_port = free_udp_port();
-    setup.coprocessor_port = coprocessor_port;
-    setup.lut_fingerprint = std::stoull(recording.lut_fingerprint, nullptr, 16);
-    listen_port_ = setup.listen_port;
+      : log_(folder / "controller.log"), listen_port_(free_udp_port()) {
     const fs::path config = folder / "controller.yaml";
-    std::ofstream(config) << controller_config_yaml(grid, setup);
+    const test::CliRun written = test::safecell_cli(
+        {"controller", "config", "--cell", recording.cell_file.string(), "--lut-cache",
+         recording.cache.string(), "--listen", address(), "--coprocessor",
+         "127.0.0.1:" + std::to_string(coprocessor_port), "--out", config.string()});
+    EXPECT_EQ(written.exit_code, 0) << written.err;
+    EXPECT_NE(written.out.find("wrote " + config.string()), std::string::npos) << written.out;
     process_ = std::make_unique<ControllerProcess>(
         find_controller_program(""),
         std::vector<std::string>{"--config", config.string(), "--status-hz", "10"}, log_);

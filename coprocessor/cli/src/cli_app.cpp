@@ -10,6 +10,7 @@
 #include "safecell/cli/cell_coverage_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
 #include "safecell/cli/closed_loop_validate_command.hpp"
+#include "safecell/cli/controller_config_command.hpp"
 #include "safecell/cli/demo_command.hpp"
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
@@ -424,6 +425,32 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "The calibration file to write (ROS), or the folder for them (MC-Calib)")
       ->required();
   import_command->callback([&] { action = [&] { run_camera_import(import, out); }; });
+
+  CLI::App* controller = app.add_subcommand("controller", "The controller's side of a cell");
+  controller->require_subcommand(1);
+  ControllerConfigOptions controller_config;
+  CLI::App* config_command = controller->add_subcommand(
+      "config",
+      "Write a safecell-controller configuration for a cell: its grid to the last bit, the LUT "
+      "fingerprint of its tables, the link's addresses; the robot, timing and task sections are "
+      "the simulated robot's, to be set for a real one");
+  config_command->add_option("--cell", controller_config.cell_path,
+                             "Cell file (YAML); without it the built-in default cell");
+  config_command->add_option("--lut-cache", controller_config.lut_cache,
+                             "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                             "~/.cache/safecell");
+  config_command
+      ->add_option("--listen", controller_config.listen,
+                   "The controller's UDP address, HOST:PORT (safecell run's --controller)")
+      ->capture_default_str();
+  config_command
+      ->add_option("--coprocessor", controller_config.coprocessor,
+                   "The coprocessor's UDP address, HOST:PORT (safecell run's --listen)")
+      ->capture_default_str();
+  config_command->add_option("--out", controller_config.out, "The file to write")
+      ->capture_default_str();
+  config_command->callback(
+      [&] { action = [&] { run_controller_config(controller_config, out, err); }; });
 
   RunOptions run;
   CLI::App* run_command = app.add_subcommand(

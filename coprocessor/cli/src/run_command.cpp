@@ -24,6 +24,7 @@
 #include "safecell/service/sensing_service.hpp"
 #include "scene_options.hpp"
 #include "service_status.hpp"
+#include "udp_address.hpp"
 
 namespace safecell {
 namespace {
@@ -63,24 +64,6 @@ class StopSignals {
   Handler previous_interrupt_;
   Handler previous_terminate_;
 };
-
-// "HOST:PORT" -> the endpoint; `port_from` is 0 for a local address that may take any port.
-UdpEndpoint endpoint_of(const std::string& option, const std::string& text, int port_from) {
-  const std::size_t colon = text.rfind(':');
-  const std::string expected =
-      "HOST:PORT with a port of " + std::to_string(port_from) + "..65535, e.g. 192.168.10.2:47701";
-  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) {
-    bad_option(option, text, expected);
-  }
-  const std::string port_text = text.substr(colon + 1);
-  if (port_text.size() > 5 || !std::all_of(port_text.begin(), port_text.end(),
-                                           [](char c) { return c >= '0' && c <= '9'; })) {
-    bad_option(option, text, expected);
-  }
-  const int port = std::stoi(port_text);
-  if (port < port_from || port > 65535) bad_option(option, text, expected);
-  return {text.substr(0, colon), static_cast<unsigned short>(port)};
-}
 
 void check_options(const RunOptions& options) {
   if (options.cell_path.empty()) {
@@ -175,8 +158,8 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
 int run_service(const RunOptions& options, std::ostream& out, std::ostream& err) {
   check_options(options);
   const StopSignals signals;
-  const UdpEndpoint controller = endpoint_of("--controller", options.controller, 1);
-  const UdpEndpoint listen = endpoint_of("--listen", options.listen, 0);
+  const UdpEndpoint controller = udp_address("--controller", options.controller, 1);
+  const UdpEndpoint listen = udp_address("--listen", options.listen, 0);
   const fs::path out_dir(options.out_dir);
   fs::create_directories(out_dir);
 

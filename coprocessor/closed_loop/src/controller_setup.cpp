@@ -57,8 +57,7 @@ std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup
                                 std::to_string(grid.joint_count()) + " joints");
   }
   std::ostringstream yaml;
-  yaml << "# Written by safecell for a closed loop on this machine; the grid is the coprocessor's "
-          "to the last bit.\n"
+  yaml << "# Written by safecell for its cell; the grid is the coprocessor's to the last bit.\n"
        << "grid:\n  m_max_m: " << exact(grid.m_max_m()) << "\n  joints:\n";
   for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
     const JointSpec& joint = grid.joint(j);
@@ -82,8 +81,8 @@ std::string controller_config_yaml(const CspaceGrid& grid, const ControllerSetup
        << "safety:\n  min_healthy_cameras: " << setup.min_healthy_cameras
        << "\n  max_look_ahead_cells: " << setup.max_look_ahead_cells << "\n"
        << (setup.test_only_look_ahead_off ? "  test_only_look_ahead_off: true\n" : "")
-       << "link:\n  listen: 127.0.0.1:" << setup.listen_port
-       << "\n  coprocessor: 127.0.0.1:" << setup.coprocessor_port
+       << "link:\n  listen: " << setup.listen_address << ':' << setup.listen_port
+       << "\n  coprocessor: " << setup.coprocessor_address << ':' << setup.coprocessor_port
        << "\n  lut_fingerprint: " << setup.lut_fingerprint << "\n"
        << "task:\n  goals_rad:" << (setup.goals_rad.empty() ? " []\n" : "\n");
   for (const std::vector<double>& goal : setup.goals_rad) yaml << "    - " << list(goal) << "\n";

@@ -42,7 +42,9 @@ struct ControllerSetup {
   // The look-ahead's reach per joint; its worst case checks (cells + 1)^(joints - 1) lines of
   // cells, so this bounds the cycle's time.
   std::uint32_t max_look_ahead_cells = 12;
+  std::string listen_address = "127.0.0.1";  // the controller's link address
   std::uint16_t listen_port = 0;
+  std::string coprocessor_address = "127.0.0.1";
   std::uint16_t coprocessor_port = 0;
   std::uint64_t lut_fingerprint = 0;
   std::vector<std::vector<double>> goals_rad;
