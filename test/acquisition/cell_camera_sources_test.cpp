@@ -86,6 +86,7 @@ TEST(CellCameraSources, RecordingsPlayedLiveKeepTheirPaceOnTheSteadyClock) {
   FrameSetAcquirer live(cell_camera_sources(cell, Recordings::kLive));
   const double started_s = steady_now_s();
   std::vector<FrameSet> sets;
+  sets.reserve(3);
   for (int i = 0; i < 3; ++i) sets.push_back(live.acquire());
   const double ended_s = steady_now_s();
   for (std::size_t i = 0; i < 3; ++i) {

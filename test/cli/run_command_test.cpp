@@ -129,34 +129,38 @@ class Controller {
   std::unique_ptr<ControllerProcess> process_;
 };
 
+// The recording and every test's folder, made once for the suite and removed at its end.
+struct SuiteFiles {
+  fs::path folder;
+  Recording recording;
+};
+
+SuiteFiles*& suite_files() {
+  static SuiteFiles* files = nullptr;
+  return files;
+}
+
 class RunCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scratch_ =
-        new fs::path(fs::temp_directory_path() / ("safecell-run-" + std::to_string(::getpid())));
-    fs::remove_all(*scratch_);
-    fs::create_directories(*scratch_);
-    recording_ = new Recording(record_cell(*scratch_));
+    const fs::path folder =
+        fs::temp_directory_path() / ("safecell-run-" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    suite_files() = new SuiteFiles{folder, record_cell(folder)};
   }
   static void TearDownTestSuite() {
-    delete recording_;
-    fs::remove_all(*scratch_);
-    delete scratch_;
+    fs::remove_all(suite_files()->folder);
+    delete suite_files();
+    suite_files() = nullptr;
   }
-  static const Recording& recording() { return *recording_; }
+  static const Recording& recording() { return suite_files()->recording; }
   static fs::path folder(const std::string& name) {
-    const fs::path path = *scratch_ / name;
+    fs::path path = suite_files()->folder / name;
     fs::create_directories(path);
     return path;
   }
-
- private:
-  static fs::path* scratch_;  // the recording and every test's folder, removed at the end
-  static Recording* recording_;
 };
-
-fs::path* RunCommand::scratch_ = nullptr;
-Recording* RunCommand::recording_ = nullptr;
 
 std::vector<std::string> run_arguments(const Recording& recording, const Controller& controller,
                                        std::uint16_t listen_port, const fs::path& out) {
@@ -192,10 +196,13 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
   }
   const auto summary = nlohmann::json::parse(read_text(out / "run_summary.json"));
   // Every set after the reference's five went through the pipeline to the controller, all four
-  // views known; the robot's pose was known for some (the joint stream came back).
+  // views known; the robot's pose at the exposures was known (the joint stream came back, and the
+  // replayed exposures are on the clock it is matched against).
   EXPECT_EQ(summary["cycles"].get<int>(), kSets - 5) << summary.dump(2);
   EXPECT_EQ(summary["cycles_short_of_views"].get<int>(), 0);
-  EXPECT_LT(summary["all_forbidden_cycles"].get<int>(), summary["cycles"].get<int>());
+  // Only the first cycles may find no joint state around their exposure yet.
+  EXPECT_LT(summary["all_forbidden_cycles"].get<int>(), summary["cycles"].get<int>() / 4)
+      << summary.dump(2);
   // The controller took maps and, at the end, the stop request (it holds the robot, latched).
   EXPECT_TRUE(wait_for_text(controller.log(), "stop requested", 3s)) << read_text(controller.log());
   EXPECT_NE(read_text(controller.log()).find(" map v"), std::string::npos);

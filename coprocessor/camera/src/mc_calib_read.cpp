@@ -79,11 +79,12 @@ std::vector<McCalibCamera> read_mc_calib_cameras(const std::filesystem::path& pa
     std::vector<McCalibCamera> cameras;
     for (int index = 0; index < static_cast<int>(count); ++index) {
       const std::string key = "camera_" + std::to_string(index);
-      const cv::FileNode node =
-          root.require(key.c_str(), "camera " + std::to_string(index) + " of nb_camera " +
-                                        std::to_string(static_cast<int>(count)));
-      cameras.push_back(
-          read_camera(CalibrationReader(source + ": " + key, node), source, index, units_m));
+      std::string expected = "camera " + std::to_string(index);
+      expected += " of nb_camera " + std::to_string(static_cast<int>(count));
+      const cv::FileNode node = root.require(key.c_str(), expected);
+      std::string where = source;
+      where += ": " + key;
+      cameras.push_back(read_camera(CalibrationReader(where, node), source, index, units_m));
     }
     return cameras;
   } catch (const cv::Exception& error) {

@@ -13,8 +13,7 @@ namespace {
 
 class RosReader {
  public:
-  RosReader(std::string source, YAML::Node root)
-      : source_(std::move(source)), root_(std::move(root)) {
+  RosReader(std::string source, const YAML::Node& root) : source_(std::move(source)), root_(root) {
     if (!root_.IsMap()) fail("(file)", "expected a mapping of camera_info keys");
   }
 
@@ -44,8 +43,9 @@ class RosReader {
     return node.Scalar();
   }
 
-  // {rows, cols, data} with rows x cols finite numbers; `counts` are the data sizes allowed.
-  std::vector<double> matrix(const char* key, std::vector<std::size_t> counts) const {
+  // {rows, cols, data}: the data, a list of finite numbers whose count is one of `counts` (rows and
+  // cols, which ROS writes too, are not needed).
+  std::vector<double> matrix(const char* key, const std::vector<std::size_t>& counts) const {
     const YAML::Node node = require(key, "a mapping of rows, cols and data");
     const YAML::Node data = node["data"];
     if (!node.IsMap() || !data || !data.IsSequence()) {

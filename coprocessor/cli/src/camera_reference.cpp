@@ -76,6 +76,7 @@ std::vector<cv::Mat> record_reference_images(FrameSetAcquirer& acquirer, std::si
   }
   progress.finish();
   std::vector<cv::Mat> medians;
+  medians.reserve(frames.size());
   for (const auto& camera_frames : frames) medians.push_back(median_image(camera_frames));
   return medians;
 }
