@@ -165,9 +165,10 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
 
   const CellModel cell = load_cell_model(load_cell_file(options.cell_path));
   const CspaceGrid grid = make_grid(cell.config);
+  // The cameras first: a camera without a source is named before the tables take their time.
+  FrameSetAcquirer cameras(cell_camera_sources(cell, Recordings::kLive));
   const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
   const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
-  FrameSetAcquirer cameras(cell_camera_sources(cell, Recordings::kLive));
 
   std::vector<cv::Mat> reference;
   if (options.reference_dir.empty()) {
