@@ -8,7 +8,6 @@
 #include <random>
 
 #include "demo_report.hpp"
-#include "progress_bar.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/cli/validate_command.hpp"
 #include "safecell/closed_loop/controller_session.hpp"
@@ -97,7 +96,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
     return scene;
   });
 
-  const bool interactive = &err == &std::cerr && ProgressBar::stderr_is_terminal();
+  StatusPrinter status(err);
   const auto period = std::chrono::nanoseconds(static_cast<std::int64_t>(1e9 / options.fps));
   const auto start = Clock::time_point(std::chrono::nanoseconds(start_ns));
   const auto end =
@@ -113,7 +112,6 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   std::optional<double> fault_since;  // the controller has reported a fault since then
   std::size_t cycle_count = 0;
   std::int64_t k = 0;
-  double next_status_s = 0.0;
   while (true) {
     const auto exposure_at = start + k * period;
     if (exposure_at >= end) break;
@@ -195,18 +193,12 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
       }
       run.snapshots.push_back(std::move(snapshot));
     }
-    if (time_s >= next_status_s || interactive) {
-      const std::string status = service_status_line(
-          index, time_s, cycle, sensing.grid.cell_count(), joints, latency.last_ms());
-      if (interactive) {
-        err << '\r' << status << "\x1b[K" << std::flush;
-      } else {
-        err << status << '\n';
-        next_status_s = time_s + 1.0;
-      }
-    }
+    status.cycle(time_s, [&] {
+      return service_status_line(index, time_s, cycle, sensing.grid.cell_count(), joints,
+                                 latency.last_ms());
+    });
   }
-  if (interactive) err << '\n';
+  status.finish();
 
   // A clean end: the controller is asked to stop (it holds the robot), then the program exits.
   // What follows the request is not part of the run.

@@ -10,7 +10,6 @@
 
 #include "camera_reference.hpp"
 #include "lut_loading.hpp"
-#include "progress_bar.hpp"
 #include "safecell/acquisition/cell_camera_sources.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
@@ -222,10 +221,9 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     last_joints = std::move(sample);
   });
 
-  const bool interactive = &err == &std::cerr && ProgressBar::stderr_is_terminal();
+  StatusPrinter status(err);
   RunFigures figures;
   std::size_t faults_reported = 0;
-  double next_status_s = 0.0;
   std::string stopped_because;
   while (true) {
     if (const auto signal = StopSignals::received()) {
@@ -256,19 +254,12 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       err << "controller fault: " << v1::FaultCause_Name(fault.cause()) << ": " << fault.detail()
           << '\n';
     }
-    if (time_s >= next_status_s || interactive) {
-      const std::string status =
-          service_status_line(figures.cycles - 1, time_s, cycle, grid.cell_count(),
-                              last_joints ? &*last_joints : nullptr, latency.last_ms());
-      if (interactive) {
-        err << '\r' << status << "\x1b[K" << std::flush;
-      } else {
-        err << status << '\n';
-        next_status_s = time_s + 1.0;
-      }
-    }
+    status.cycle(time_s, [&] {
+      return service_status_line(figures.cycles - 1, time_s, cycle, grid.cell_count(),
+                                 last_joints ? &*last_joints : nullptr, latency.last_ms());
+    });
   }
-  if (interactive) err << '\n';
+  status.finish();
 
   // A clean stop: the controller holds the robot on the request (latched until its operator
   // acknowledges) instead of finding the maps gone.

@@ -1,5 +1,8 @@
 #include "service_status.hpp"
 
+#include <iostream>
+
+#include "progress_bar.hpp"
 #include "safecell/cli/text_table.hpp"
 
 namespace safecell {
@@ -23,6 +26,22 @@ std::string service_status_line(std::size_t index, double time_s, const ServiceC
   status += "  latency " + (last_latency_ms >= 0.0 ? fixed(last_latency_ms, 1) + " ms" : "-");
   if (!cycle.all_forbidden.empty()) status += "  ALL FORBIDDEN: " + cycle.all_forbidden;
   return status;
+}
+
+StatusPrinter::StatusPrinter(std::ostream& err)
+    : err_(err), interactive_(&err == &std::cerr && ProgressBar::stderr_is_terminal()) {}
+
+void StatusPrinter::cycle(double time_s, const std::function<std::string()>& line) {
+  if (interactive_) {
+    err_ << '\r' << line() << "\x1b[K" << std::flush;
+  } else if (time_s >= next_s_) {
+    err_ << line() << '\n';
+    next_s_ = time_s + 1.0;
+  }
+}
+
+void StatusPrinter::finish() {
+  if (interactive_) err_ << '\n';
 }
 
 void AppliedMapLatency::joint_state(const JointRecord& sample, const JointRecord* previous) {

@@ -4,6 +4,8 @@
 // critical joint, the end-to-end latency. Private to the CLI.
 
 #include <cstdint>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <unordered_map>
 
@@ -17,6 +19,22 @@ namespace safecell {
 std::string service_status_line(std::size_t index, double time_s, const ServiceCycle& cycle,
                                 std::uint32_t cell_count, const JointRecord* joints,
                                 double last_latency_ms);
+
+// Where the status line goes: redrawn in place on a terminal, else one line a second (of the
+// service's time). Thread context: the service's thread.
+class StatusPrinter {
+ public:
+  explicit StatusPrinter(std::ostream& err);
+  // The line for a cycle at `time_s` (seconds): `line` is called only when it will be shown.
+  void cycle(double time_s, const std::function<std::string()>& line);
+  // Ends the line being redrawn, if any.
+  void finish();
+
+ private:
+  std::ostream& err_;
+  bool interactive_;
+  double next_s_ = 0.0;
+};
 
 // Exposure to the controller swapping the map in, from the joint stream: each map's exposure
 // (seconds, the service's time) as it is sent, and the controller's report of the version it
