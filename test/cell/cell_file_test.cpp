@@ -105,10 +105,13 @@ TEST(CellFile, EntriesAndTheirSeparation) {
             "bad.yaml:11: entries: an empty list, expected at least one entry (leave the field "
             "out when the cell does not say where people come in)");
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {response_s: -1}\n"),
-            "bad.yaml:11: entry_separation.response_s: value -1, expected 0 .. 2 s");
-  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {approach_speed_m_s: 0.1}\n"),
-            "bad.yaml:11: entry_separation.approach_speed_m_s: value 0.1, expected 0.5 .. 3 m/s "
-            "(ISO 13855: 1.6 m/s walking)");
+            "bad.yaml:11: entry_separation.response_s: value -1, expected 0.01 .. 2 s");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {stopping_s: 0}\n"),
+            "bad.yaml:11: entry_separation.stopping_s: value 0, expected 0.05 .. 5 s (measure it "
+            "on the robot)");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {approach_speed_m_s: 1.2}\n"),
+            "bad.yaml:11: entry_separation.approach_speed_m_s: value 1.2, expected 1.6 .. 3 m/s "
+            "(ISO 13855: 1.6 m/s walking, 2 m/s reaching)");
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {speed: 1}\n"),
             "bad.yaml:11: entry_separation.speed: unknown field (expected one of: "
             "approach_speed_m_s, response_s, stopping_s, intrusion_m)");

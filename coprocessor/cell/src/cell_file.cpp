@@ -212,10 +212,12 @@ EntrySeparationConfig entry_separation_of(const Field& field) {
                              const char* expected) {
     if (field.node[key]) value = bounded_of(require(field, key), lo, hi, expected);
   };
-  read("approach_speed_m_s", separation.approach_speed_m_s, 0.5, 3.0,
-       "0.5 .. 3 m/s (ISO 13855: 1.6 m/s walking)");
-  read("response_s", separation.response_s, 0.0, 2.0, "0 .. 2 s");
-  read("stopping_s", separation.stopping_s, 0.0, 5.0, "0 .. 5 s");
+  // ISO 13855 allows no slower approach than walking; the response (a frame period at least)
+  // and the robot's stopping are never instant.
+  read("approach_speed_m_s", separation.approach_speed_m_s, 1.6, 3.0,
+       "1.6 .. 3 m/s (ISO 13855: 1.6 m/s walking, 2 m/s reaching)");
+  read("response_s", separation.response_s, 0.01, 2.0, "0.01 .. 2 s");
+  read("stopping_s", separation.stopping_s, 0.05, 5.0, "0.05 .. 5 s (measure it on the robot)");
   read("intrusion_m", separation.intrusion_m, 0.0, 2.0, "0 .. 2 m");
   return separation;
 }
