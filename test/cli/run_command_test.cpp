@@ -204,7 +204,8 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
   EXPECT_LT(summary["all_forbidden_cycles"].get<int>(), summary["cycles"].get<int>() / 4)
       << summary.dump(2);
   // The controller took maps and, at the end, the stop request (it holds the robot, latched).
-  EXPECT_TRUE(wait_for_text(controller.log(), "stop requested", 3s)) << read_text(controller.log());
+  EXPECT_TRUE(wait_for_text(controller.log(), "stop requested by the coprocessor (operator)", 3s))
+      << read_text(controller.log());
   EXPECT_NE(read_text(controller.log()).find(" map v"), std::string::npos);
   controller.process().stop(3s);
 }
@@ -230,7 +231,8 @@ TEST_F(RunCommand, SigtermToTheProgramIsAStopRequestAndKillingItIsNot) {
     // Either way the controller stops the robot: on the request, or when its watchdog finds the
     // maps gone. Only the request names itself.
     EXPECT_TRUE(wait_for_text(controller.log(), "fault:", 3s)) << read_text(controller.log());
-    const bool requested = wait_for_text(controller.log(), "stop requested", 1s);
+    const bool requested =
+        wait_for_text(controller.log(), "stop requested by the coprocessor (operator)", 1s);
     EXPECT_EQ(requested, !killed) << read_text(controller.log());
     controller.process().stop(3s);
   }

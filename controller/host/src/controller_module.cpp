@@ -18,6 +18,20 @@
 namespace safecell {
 namespace {
 
+// The cause of a stop request as its log line names it.
+const char* fault_cause_name(safecell_v1_FaultCause cause) {
+  switch (cause) {
+    case safecell_v1_FaultCause_FAULT_CAUSE_OPERATOR:
+      return "operator";
+    case safecell_v1_FaultCause_FAULT_CAUSE_CAMERAS:
+      return "cameras";
+    case safecell_v1_FaultCause_FAULT_CAUSE_WATCHDOG:
+      return "watchdog";
+    default:
+      return "other";
+  }
+}
+
 std::uint64_t monotonic_ns() {
   timespec now{};
   clock_gettime(CLOCK_MONOTONIC, &now);
@@ -223,6 +237,8 @@ bool ControllerModule::cycle(std::uint64_t now) {
   status_.elapsed_s = static_cast<double>(now - p.start_ns) * 1e-9;
   status_.cycle = &report;
   status_.motion = &p.motion.progress();
+  status_.stop_requested = p.link.stop_requested();
+  status_.stop_cause = status_.stop_requested ? fault_cause_name(p.link.stop_cause()) : "";
 
   const MotionStatus motion = p.motion.progress().status;
   if (motion == MotionStatus::kArrived && status_.goal < status_.goals) {
@@ -326,6 +342,9 @@ std::string status_line(const ModuleStatus& status) {
       line << ", joint " << cycle.look_ahead.critical_joint + 1;
     }
     if (cycle.look_ahead.has_blocking_cell) line << ", cell " << cycle.look_ahead.blocking_cell;
+  }
+  if (status.stop_requested) {
+    line << " | stop requested by the coprocessor (" << status.stop_cause << ")";
   }
   if (status.overruns > 0) line << " | late cycles " << status.overruns;
   line << " | worst cycle " << std::fixed << std::setprecision(3) << status.worst_cycle_ms << " ms";

@@ -104,6 +104,8 @@ class ControllerLink {
   std::uint64_t updates_refused() const noexcept { return updates_refused_; }
   // Whole updates whose map differed from the sender's: the controller stops on each (SAFETY.md).
   std::uint64_t hash_mismatches() const noexcept { return hash_mismatches_; }
+  // The coprocessor asked the robot stopped (a clean shutdown, its operator), until acknowledged.
+  bool stop_requested() const noexcept { return stop_requested_; }
   safecell_v1_FaultCause stop_cause() const noexcept { return stop_cause_; }
 
  private:

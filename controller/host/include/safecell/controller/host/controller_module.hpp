@@ -42,6 +42,9 @@ struct ModuleStatus {
   double worst_period_ms = 0.0;
   double worst_cycle_ms = 0.0;  // the safety cycle's own work (the watchdog's budget)
   std::string detail;           // why the task failed, when it did
+  // The coprocessor's stop request, until acknowledged (whatever else holds the robot too).
+  bool stop_requested = false;
+  const char* stop_cause = "";  // its cause by name
 };
 
 // The module's time: the monotonic clock (a real cell), or a clock that only moves when told
