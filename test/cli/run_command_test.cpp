@@ -203,6 +203,20 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
   // Only the first cycles may find no joint state around their exposure yet.
   EXPECT_LT(summary["all_forbidden_cycles"].get<int>(), summary["cycles"].get<int>() / 4)
       << summary.dump(2);
+  // The stop at the end (and any all-forbidden start) left incidents, each whole: its frames for
+  // every cycle it lists.
+  ASSERT_GE(summary["incidents"].get<int>(), 1) << summary.dump(2) << run.err;
+  for (const auto& entry : fs::directory_iterator(out / "incidents")) {
+    SCOPED_TRACE(entry.path().string());
+    const auto incident = nlohmann::json::parse(read_text(entry.path() / "incident.json"));
+    EXPECT_FALSE(incident["causes"].empty());
+    std::size_t frames = 0;
+    for (const auto& file : fs::directory_iterator(entry.path() / "frames" / "cam0")) {
+      if (file.path().extension() == ".png") ++frames;
+    }
+    EXPECT_EQ(frames, incident["cycles"].size());
+    EXPECT_GT(frames, 0U);
+  }
   // The controller took maps and, at the end, the stop request (it holds the robot, latched).
   EXPECT_TRUE(wait_for_text(controller.log(), "stop requested by the coprocessor (operator)", 3s))
       << read_text(controller.log());

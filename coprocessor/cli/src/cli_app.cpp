@@ -488,6 +488,12 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "run_summary.json")
       ->capture_default_str();
   run_command
+      ->add_option("--incident-seconds", run.incident_seconds,
+                   "Seconds before each stop or fault the incident recorder writes into "
+                   "<out>/incidents (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 60.0));
+  run_command
       ->add_option("--max-acceleration", run.max_acceleration_rad_s2,
                    "The robot's largest joint acceleration, rad/s^2 (bounds the joint stream's "
                    "interpolation error)")

@@ -20,6 +20,7 @@
 #include "safecell/lut/configuration_silhouettes.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
+#include "safecell/service/incident_recorder.hpp"
 #include "safecell/service/sensing_service.hpp"
 #include "scene_options.hpp"
 #include "service_status.hpp"
@@ -127,6 +128,7 @@ struct RunFigures {
   std::size_t cycles = 0;
   std::size_t all_forbidden_cycles = 0;
   std::size_t cycles_short_of_views = 0;  // fewer known views than the camera threshold
+  std::size_t incidents = 0;              // folders the incident recorder wrote
   std::vector<double> features_ms;
   std::vector<double> fusion_ms;
 };
@@ -148,6 +150,7 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
   summary["features_ms_p99"] = percentile(figures.features_ms, 0.99);
   summary["fusion_ms_p99"] = percentile(figures.fusion_ms, 0.99);
   summary["controller_faults"] = link.controller_faults().size();
+  summary["incidents"] = figures.incidents;
   summary["stopped_because"] = stopped_because;
   write_file_atomically(file, summary.dump(2) + "\n");
 }
@@ -212,18 +215,36 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   const auto seconds_since_start = [start_ns](std::uint64_t ns) {
     return (static_cast<double>(ns) - static_cast<double>(start_ns)) * 1e-9;
   };
+  // Incidents: the seconds around every stop and fault, for `safecell replay`.
+  std::optional<IncidentRecorder> incidents;
+  if (options.incident_seconds > 0.0) {
+    incidents.emplace(IncidentSettings{out_dir / "incidents", options.incident_seconds, 1.0, 50});
+  }
   std::optional<JointRecord> last_joints;
   AppliedMapLatency latency;
   link.on_joint_state([&](const ReceivedJointState& received) {
     if (received.coprocessor_time_ns == 0) return;
     JointRecord sample = joint_record(received, link.clock_sync(), start_ns);
     latency.joint_state(sample, last_joints ? &*last_joints : nullptr);
+    if (incidents) {
+      incidents->add_joint_state(
+          {sample.time_s, state_name(sample.state), sample.speed_scale, sample.q});
+      const bool halted = sample.state == v1::CONTROLLER_STATE_STOPPED ||
+                          sample.state == v1::CONTROLLER_STATE_FAULT;
+      if (halted && (!last_joints || last_joints->state != sample.state)) {
+        incidents->trigger(sample.time_s, std::string("controller ") + state_name(sample.state));
+      }
+    }
     last_joints = std::move(sample);
   });
+  const auto incident_written = [&](const std::optional<fs::path>& folder) {
+    if (folder) err << "incident written: " << folder->string() << '\n';
+  };
 
   StatusPrinter status(err);
   RunFigures figures;
   std::size_t faults_reported = 0;
+  bool was_all_forbidden = false;
   std::string stopped_because;
   while (true) {
     if (const auto signal = StopSignals::received()) {
@@ -249,11 +270,20 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     figures.fusion_ms.push_back(cycle.times.fusion_ms);
     const double time_s = seconds_since_start(cycle.exposure_ns);
     latency.sent(cycle.map_version, time_s);
+    const bool newly_all_forbidden = !cycle.all_forbidden.empty() && !was_all_forbidden;
+    was_all_forbidden = !cycle.all_forbidden.empty();
+    if (incidents) {
+      incidents->add_cycle(time_s, set, cycle, service.last_map());
+      if (newly_all_forbidden) incidents->trigger(time_s, "all forbidden: " + cycle.all_forbidden);
+    }
     for (; faults_reported < link.controller_faults().size(); ++faults_reported) {
       const v1::FaultReport& fault = link.controller_faults()[faults_reported];
-      err << "controller fault: " << v1::FaultCause_Name(fault.cause()) << ": " << fault.detail()
-          << '\n';
+      const std::string text =
+          std::string(v1::FaultCause_Name(fault.cause())) + ": " + fault.detail();
+      err << "controller fault: " << text << '\n';
+      if (incidents) incidents->trigger(time_s, "controller fault " + text);
     }
+    if (incidents) incident_written(incidents->poll(time_s));
     status.cycle(time_s, [&] {
       return service_status_line(figures.cycles - 1, time_s, cycle, grid.cell_count(),
                                  last_joints ? &*last_joints : nullptr, latency.last_ms());
@@ -266,6 +296,10 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   link.send_stop_request(v1::FAULT_CAUSE_OPERATOR, "safecell run stopped: " + stopped_because);
   service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
+  if (incidents) {
+    incident_written(incidents->flush());
+    figures.incidents = incidents->incidents_written();
+  }
   write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, link);
   out << "stopped: " << stopped_because << "; the controller was asked to stop the robot\n"
       << "cycles " << figures.cycles << " in " << fixed(seconds, 1) << " s, all-forbidden "

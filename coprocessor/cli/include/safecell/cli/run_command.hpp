@@ -21,7 +21,10 @@ struct RunOptions {
   std::string reference_dir;             // <camera>.png per camera; empty: recorded at the start
   std::size_t reference_sets = 30;       // frame sets whose median is the recorded reference
   double seconds = 0.0;                  // 0: until stopped
-  std::string out_dir = "safecell-run";  // the recorded reference and run_summary.json
+  std::string out_dir = "safecell-run";  // the recorded reference, incidents/, run_summary.json
+  // The incident recorder keeps this many seconds before each stop or fault (0: off). Each second
+  // holds every camera's frames: about 50 MB a second for four 704 x 576 cameras at 30 frames/s.
+  double incident_seconds = 2.0;
   // The robot's joint acceleration limit (all joints), rad/s^2: bounds the joint stream's
   // interpolation error at an exposure. Too small a value hides real motion, so the default is
   // above what arms of this class reach.
