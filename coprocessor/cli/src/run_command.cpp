@@ -5,12 +5,14 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "camera_reference.hpp"
 #include "lut_loading.hpp"
 #include "safecell/acquisition/cell_camera_sources.hpp"
+#include "safecell/acquisition/exposure_sync.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cli/text_table.hpp"
@@ -124,11 +126,21 @@ std::optional<std::string> all_cameras_stopped(const FrameSet& set) {
   return "every camera stopped delivering (" + set.frames.front().view.detail + ")";
 }
 
+// How far past a frame set's exposure the joint stream is taken in before the set is processed:
+// two control cycles of 4 ms and the transport.
+constexpr std::chrono::milliseconds kJointStreamLead{10};
+
+Clock::time_point steady_time_point(double seconds) {
+  return Clock::time_point(
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds)));
+}
+
 struct RunFigures {
   std::size_t cycles = 0;
   std::size_t all_forbidden_cycles = 0;
   std::size_t cycles_short_of_views = 0;  // fewer known views than the camera threshold
   std::size_t incidents = 0;              // folders the incident recorder wrote
+  std::map<std::string, std::size_t> all_forbidden_because;  // cycles per reason
   std::vector<double> features_ms;
   std::vector<double> fusion_ms;
 };
@@ -146,6 +158,7 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
   summary["cycles"] = figures.cycles;
   summary["seconds"] = seconds;
   summary["all_forbidden_cycles"] = figures.all_forbidden_cycles;
+  summary["all_forbidden_because"] = figures.all_forbidden_because;
   summary["cycles_short_of_views"] = figures.cycles_short_of_views;
   summary["features_ms_p99"] = percentile(figures.features_ms, 0.99);
   summary["fusion_ms_p99"] = percentile(figures.fusion_ms, 0.99);
@@ -260,11 +273,17 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       stopped_because = *stopped;
       break;
     }
-    // The joint stream up to now: the pose at the exposure is interpolated, not extrapolated.
-    service.serve_link(Clock::now());
+    // The joint stream until a little past the exposure, so that the pose there is interpolated
+    // between samples rather than extrapolated (a camera's frame mostly arrives later than this
+    // anyway; a recording played live is stamped as it is handed out).
+    service.serve_link(
+        std::max(Clock::now(), steady_time_point(median_exposure_s(set)) + kJointStreamLead));
     const ServiceCycle& cycle = service.process(set);
     ++figures.cycles;
-    if (!cycle.all_forbidden.empty()) ++figures.all_forbidden_cycles;
+    if (!cycle.all_forbidden.empty()) {
+      ++figures.all_forbidden_cycles;
+      ++figures.all_forbidden_because[cycle.all_forbidden];
+    }
     if (cycle.known_views < service_settings.camera_threshold) ++figures.cycles_short_of_views;
     figures.features_ms.push_back(cycle.times.features_ms);
     figures.fusion_ms.push_back(cycle.times.fusion_ms);
