@@ -180,6 +180,9 @@ TEST(LockstepRunner, RefusesTimeGoingBackAndAClosedChannel) {
   EXPECT_NE(closed.log.find("closed"), std::string::npos) << closed.log;
 }
 
+// Real time on a shared machine: a cycle that comes late ends in a watchdog fault, which holds
+// the robot as well as waiting does (CI saw one under load), so held means waiting or faulted,
+// never moving or slowed, and the speed scale stays 0.
 TEST(ControllerModule, WithoutACoprocessorTheRobotIsHeld) {
   ControllerConfig config = load_controller_config(SAFECELL_CONTROLLER_EXAMPLE);
   config.link.listen.port = 0;  // any free port
@@ -189,8 +192,10 @@ TEST(ControllerModule, WithoutACoprocessorTheRobotIsHeld) {
   bool ever_moved = false;
   const TaskOutcome outcome = module.run(0.3, 0.05, [&](const ModuleStatus& status) {
     ++lines;
-    ever_moved = ever_moved || status.cycle->state != CycleState::kWaiting;
-    EXPECT_NE(status_line(status).find("waiting"), std::string::npos) << status_line(status);
+    const CycleState state = status.cycle->state;
+    const bool held = state == CycleState::kWaiting || state == CycleState::kFault;
+    ever_moved = ever_moved || !held || status.cycle->speed_scale != 0.0;
+    EXPECT_TRUE(held) << status_line(status);
   });
   EXPECT_EQ(outcome, TaskOutcome::kTimedOut);
   EXPECT_FALSE(ever_moved);
