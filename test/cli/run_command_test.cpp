@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -223,6 +224,71 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
       << read_text(controller.log());
   EXPECT_NE(read_text(controller.log()).find(" map v"), std::string::npos);
   controller.process().stop(3s);
+
+  // Every incident replays offline to the maps the service sent, bit for bit.
+  std::optional<fs::path> replayable;
+  for (const auto& entry : fs::directory_iterator(out / "incidents")) {
+    SCOPED_TRACE(entry.path().string());
+    const test::CliRun replay = test::safecell_cli(
+        {"replay", entry.path().string(), "--lut-cache", recording().cache.string()});
+    EXPECT_EQ(replay.exit_code, 0) << replay.out << replay.err;
+    const auto replayed = nlohmann::json::parse(read_text(entry.path() / "replay" / "replay.json"));
+    EXPECT_EQ(replayed["cycles_differing"].get<int>(), 0) << replayed.dump(1);
+    std::size_t identical = 0;
+    for (const auto& cycle : replayed["per_cycle"]) identical += cycle["outcome"] == "identical";
+    if (identical > 0) replayable = entry.path();
+    for (const char* file : {"index.html", "timeline.png"}) {
+      EXPECT_TRUE(fs::exists(entry.path() / "replay" / file)) << file;
+    }
+  }
+  ASSERT_TRUE(replayable) << "no incident had a cycle the pipeline ran on";
+  EXPECT_TRUE(fs::exists(*replayable / "replay" / "views.png"));
+
+  // The controls: the same incident with other reference images, or with one cycle's frames
+  // changed, must replay to other maps; with another cell file it is refused. (The recording's
+  // reference is its first frame set, robot and all, so it is the images that must differ.)
+  const auto replay_damaged = [&](const std::string& name, const auto& damage) {
+    const fs::path copy = out / name;
+    fs::copy(*replayable, copy, fs::copy_options::recursive);
+    fs::remove_all(copy / "replay");
+    damage(copy);
+    return test::safecell_cli({"replay", copy.string(), "--lut-cache", recording().cache.string()});
+  };
+  const auto invert = [](const fs::path& image_file) {
+    const cv::Mat image = cv::imread(image_file.string(), cv::IMREAD_GRAYSCALE);
+    ASSERT_FALSE(image.empty()) << image_file;
+    ASSERT_TRUE(cv::imwrite(image_file.string(), 255 - image));
+  };
+  const test::CliRun other_reference = replay_damaged("other-reference", [&](const fs::path& copy) {
+    for (int c = 0; c < 4; ++c) invert(copy / "reference" / ("cam" + std::to_string(c) + ".png"));
+  });
+  EXPECT_EQ(other_reference.exit_code, 1) << other_reference.out << other_reference.err;
+  EXPECT_NE(other_reference.err.find("the replayed map differs in"), std::string::npos)
+      << other_reference.err;
+  std::string changed_cycle;
+  const test::CliRun other_frames = replay_damaged("other-frames", [&](const fs::path& copy) {
+    const auto incident = nlohmann::json::parse(read_text(copy / "incident.json"));
+    for (const auto& cycle : incident["cycles"]) {
+      if (!cycle["all_forbidden"].get<std::string>().empty()) continue;
+      changed_cycle = std::to_string(cycle["cycle"].get<int>());
+      break;
+    }
+    for (int c = 0; c < 4; ++c) {
+      invert(copy / "frames" / ("cam" + std::to_string(c)) / (changed_cycle + ".png"));
+    }
+  });
+  EXPECT_EQ(other_frames.exit_code, 1) << other_frames.out << other_frames.err;
+  EXPECT_NE(other_frames.err.find("cycle " + changed_cycle + ": the replayed map differs"),
+            std::string::npos)
+      << other_frames.err;
+  EXPECT_NE(other_frames.out.find(": 1 differ"), std::string::npos) << other_frames.out;
+  const test::CliRun other_cell = replay_damaged("other-cell", [](const fs::path& copy) {
+    std::ofstream(copy / "cell.yaml", std::ios::app) << "# edited\n";
+  });
+  EXPECT_EQ(other_cell.exit_code, kExitBadInput) << other_cell.out << other_cell.err;
+  EXPECT_NE(other_cell.err.find("is not the cell file the incident was recorded with"),
+            std::string::npos)
+      << other_cell.err;
 }
 
 TEST_F(RunCommand, SigtermToTheProgramIsAStopRequestAndKillingItIsNot) {

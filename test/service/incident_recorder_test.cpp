@@ -54,7 +54,8 @@ void feed(IncidentRecorder& recorder, int k) {
   map.set(static_cast<CellIndex>(k));
   recorder.add_cycle(time_s, set, cycle, map);
   for (int i = 0; i < 5; ++i) {
-    recorder.add_joint_state({time_s + 0.01 * i, k < 40 ? "moving" : "stopped", 1.0, {0.01 * k}});
+    recorder.add_joint_state(
+        {time_s + 0.01 * i, k < 40 ? "moving" : "stopped", 1.0, {0.01 * k}, {}});
   }
 }
 
@@ -67,19 +68,23 @@ std::string read_all(const fs::path& file) {
 
 TEST(IncidentRecorder, AStopIsWrittenWholeWithTheSecondsAroundIt) {
   const Folder folder;
-  IncidentRecorder recorder({folder.path, 1.0, 0.5, 10});
-  std::optional<fs::path> written;
+  IncidentRecorder recorder({folder.path, 1.0, 0.5, 10, {}});
+  std::vector<IncidentOutcome> outcomes;
   for (int k = 0; k < kCycles; ++k) {
     feed(recorder, k);
     if (k == 40) recorder.trigger(k * kPeriod_s, "controller stopped");
     if (k == 42) recorder.trigger(k * kPeriod_s, "controller fault");  // the same incident
-    const auto polled = recorder.poll(k * kPeriod_s);
+    const std::vector<IncidentOutcome> polled = recorder.poll(k * kPeriod_s);
     if (k < 50) {
-      EXPECT_FALSE(polled) << "written before after_s had passed, at cycle " << k;
+      EXPECT_TRUE(polled.empty()) << "written before after_s had passed, at cycle " << k;
     }
-    if (polled) written = polled;
+    outcomes.insert(outcomes.end(), polled.begin(), polled.end());
   }
-  ASSERT_TRUE(written);
+  const std::vector<IncidentOutcome> flushed = recorder.flush();  // waits for the writer
+  outcomes.insert(outcomes.end(), flushed.begin(), flushed.end());
+  ASSERT_EQ(outcomes.size(), 1U);
+  ASSERT_EQ(outcomes[0].error, "");
+  const std::optional<fs::path> written = outcomes[0].folder;
   EXPECT_EQ(recorder.incidents_written(), 1U);
   // Whole: only the finished folder is there.
   std::size_t entries = 0;
@@ -117,7 +122,7 @@ TEST(IncidentRecorder, AStopIsWrittenWholeWithTheSecondsAroundIt) {
   }
   // The joint stream over the same stretch, with the stop in it.
   const std::string joints = read_all(*written / "joints.csv");
-  ASSERT_EQ(joints.rfind("time_s,state,speed_scale,q_rad\n", 0), 0U) << joints;
+  ASSERT_EQ(joints.rfind("time_s,state,speed_scale,q_rad,velocity_rad_s\n", 0), 0U) << joints;
   // keep_s before the newest sample when the trigger came (2.04 s), give or take a sample.
   const double first_s = std::stod(joints.substr(joints.find('\n') + 1));
   EXPECT_GE(first_s, 1.0);
@@ -127,19 +132,52 @@ TEST(IncidentRecorder, AStopIsWrittenWholeWithTheSecondsAroundIt) {
 
 TEST(IncidentRecorder, NothingIsWrittenWithoutATrigger) {
   const Folder folder;
-  IncidentRecorder recorder({folder.path, 1.0, 0.5, 10});
+  IncidentRecorder recorder({folder.path, 1.0, 0.5, 10, {}});
   for (int k = 0; k < kCycles; ++k) {
     feed(recorder, k);
-    EXPECT_FALSE(recorder.poll(k * kPeriod_s));
+    EXPECT_TRUE(recorder.poll(k * kPeriod_s).empty());
   }
-  EXPECT_FALSE(recorder.flush());
+  EXPECT_TRUE(recorder.flush().empty());
   EXPECT_TRUE(fs::is_empty(folder.path));
 }
 
+// A disk that refuses the folder: the incident is dropped with an error the service logs, no
+// partial folder stays, and the next incident is written once the disk takes it again.
+TEST(IncidentRecorder, AFolderThatCannotBeWrittenDropsTheIncidentOnly) {
+  const Folder folder;
+  const fs::path blocked = folder.path / "incidents";
+  std::ofstream(blocked) << "a file where the folder should be";
+  IncidentRecorder recorder({blocked, 1.0, 0.2, 10, {}});
+  for (int k = 0; k < 20; ++k) feed(recorder, k);
+  recorder.trigger(19 * kPeriod_s, "controller stopped");
+  (void)recorder.poll(2.0);
+  std::vector<IncidentOutcome> outcomes = recorder.flush();
+  ASSERT_EQ(outcomes.size(), 1U);
+  EXPECT_TRUE(outcomes[0].folder.empty());
+  EXPECT_NE(outcomes[0].error.find("not written"), std::string::npos) << outcomes[0].error;
+  EXPECT_EQ(recorder.incidents_written(), 0U);
+  EXPECT_TRUE(recorder.poll(2.0).empty()) << "the failed incident is dropped, not retried";
+  EXPECT_TRUE(recorder.flush().empty());
+
+  fs::remove(blocked);
+  fs::create_directories(blocked);
+  for (int k = 20; k < 40; ++k) feed(recorder, k);
+  recorder.trigger(39 * kPeriod_s, "controller fault");
+  (void)recorder.poll(3.0);
+  outcomes = recorder.flush();
+  ASSERT_EQ(outcomes.size(), 1U);
+  ASSERT_EQ(outcomes[0].error, "");
+  EXPECT_TRUE(fs::exists(outcomes[0].folder / "incident.json"));
+  EXPECT_EQ(recorder.incidents_written(), 1U);
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(blocked)) ++entries;
+  EXPECT_EQ(entries, 1U) << "a partial folder was left behind";
+}
+
 TEST(IncidentRecorder, AbsurdSettingsAreRefused) {
-  EXPECT_THROW(IncidentRecorder({"", 1.0, 0.5, 10}), std::invalid_argument);
-  EXPECT_THROW(IncidentRecorder({"x", 0.0, 0.5, 10}), std::invalid_argument);
-  EXPECT_THROW(IncidentRecorder({"x", 1.0, -1.0, 10}), std::invalid_argument);
+  EXPECT_THROW(IncidentRecorder({"", 1.0, 0.5, 10, {}}), std::invalid_argument);
+  EXPECT_THROW(IncidentRecorder({"x", 0.0, 0.5, 10, {}}), std::invalid_argument);
+  EXPECT_THROW(IncidentRecorder({"x", 1.0, -1.0, 10, {}}), std::invalid_argument);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "safecell/cli/images_show_command.hpp"
 #include "safecell/cli/luts_command.hpp"
 #include "safecell/cli/luts_record_command.hpp"
+#include "safecell/cli/replay_command.hpp"
 #include "safecell/cli/run_command.hpp"
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/cli/validate_command.hpp"
@@ -511,6 +512,26 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "Seconds to wait for the controller's answer")
       ->capture_default_str();
   run_command->callback([&] { action = [&] { exit_code = run_service(run, out, err); }; });
+
+  ReplayOptions replay;
+  CLI::App* replay_command = app.add_subcommand(
+      "replay",
+      "Run the sensing pipeline again on an incident folder that safecell run recorded: every "
+      "cycle's recorded frames and robot pose give a forbidden map, compared bit for bit with "
+      "the map sent then; the report (cameras, C-space slice, timeline, index.html) goes into "
+      "<incident>/replay. Exit 1 when a map differs");
+  replay_command->add_option("incident", replay.incident_dir, "The incident folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  replay_command->add_option("--cell", replay.cell_path,
+                             "The cell file (default: the one the incident names; its text must "
+                             "be the recorded one)");
+  replay_command->add_option("--lut-cache", replay.lut_cache,
+                             "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                             "~/.cache/safecell");
+  replay_command->add_option("--out", replay.out_dir,
+                             "Folder for the report (default: <incident>/replay)");
+  replay_command->callback([&] { action = [&] { exit_code = run_replay(replay, out, err); }; });
 
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(

@@ -64,9 +64,10 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
               forbidden_slice(grid, snapshot.forbidden, sensing.luts.set.static_cells,
                               snapshot.robot_cell, 0, 1, title, snapshot.path));
   }
+  TimelineCurve distance{"the person's distance to the robot (FCL)", "m", {}, contacts.distance_m};
+  for (const JointRecord& sample : record.joints) distance.time_s.push_back(sample.time_s);
   write_png(folder / "timeline.png",
-            timeline_plot(record, contacts.distance_m,
-                          {world.person_enters_s(), world.person_leaves_s()}));
+            timeline_plot(record, distance, {world.person_enters_s(), world.person_leaves_s()}));
   CoverageOptions coverage;
   coverage.step_m = kBlindSpotStep_m;
   write_png(folder / "floor_coverage.png", floor_plan(cell, floor_coverage(cell, grid, coverage)));

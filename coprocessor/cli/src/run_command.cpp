@@ -4,10 +4,12 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 
 #include "camera_reference.hpp"
 #include "lut_loading.hpp"
@@ -25,6 +27,7 @@
 #include "safecell/service/incident_recorder.hpp"
 #include "safecell/service/sensing_service.hpp"
 #include "scene_options.hpp"
+#include "service_setup.hpp"
 #include "service_status.hpp"
 #include "udp_address.hpp"
 
@@ -118,6 +121,15 @@ bool open_session(CoprocessorLink& link, const RunOptions& options, std::ostream
   }
 }
 
+// The cell file's text, kept with every incident (replay checks it runs on the same file).
+std::string read_cell_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in) throw FileError(path, "cannot be read again");
+  return text.str();
+}
+
 // Every camera has stopped delivering (the recordings have ended, the devices are gone).
 std::optional<std::string> all_cameras_stopped(const FrameSet& set) {
   for (const CameraFrame& frame : set.frames) {
@@ -194,9 +206,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   } else {
     reference = read_reference_images(options.reference_dir, cell);
   }
-  FusionSettings fusion;
-  fusion.camera_threshold = cell.camera_threshold;
-  fusion.sync_error_s = options.sync_error_ms * 1e-3;
+  const FusionSettings fusion = service_fusion_settings(cell, options.sync_error_ms * 1e-3);
   SensingPipeline pipeline(cell, grid, luts.set, silhouettes, reference, {}, fusion);
 
   UdpTransport transport(listen, controller);
@@ -231,7 +241,14 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   // Incidents: the seconds around every stop and fault, for `safecell replay`.
   std::optional<IncidentRecorder> incidents;
   if (options.incident_seconds > 0.0) {
-    incidents.emplace(IncidentSettings{out_dir / "incidents", options.incident_seconds, 1.0, 50});
+    IncidentSetup setup{fs::absolute(options.cell_path),
+                        read_cell_text(options.cell_path),
+                        grid.fingerprint(),
+                        luts.set.fingerprint,
+                        fusion.sync_error_s,
+                        reference};
+    incidents.emplace(
+        IncidentSettings{out_dir / "incidents", options.incident_seconds, 1.0, 50, setup});
   }
   std::optional<JointRecord> last_joints;
   AppliedMapLatency latency;
@@ -241,7 +258,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     latency.joint_state(sample, last_joints ? &*last_joints : nullptr);
     if (incidents) {
       incidents->add_joint_state(
-          {sample.time_s, state_name(sample.state), sample.speed_scale, sample.q});
+          {sample.time_s, state_name(sample.state), sample.speed_scale, sample.q, sample.velocity});
       const bool halted = sample.state == v1::CONTROLLER_STATE_STOPPED ||
                           sample.state == v1::CONTROLLER_STATE_FAULT;
       if (halted && (!last_joints || last_joints->state != sample.state)) {
@@ -250,8 +267,15 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     }
     last_joints = std::move(sample);
   });
-  const auto incident_written = [&](const std::optional<fs::path>& folder) {
-    if (folder) err << "incident written: " << folder->string() << '\n';
+  // What the incident writer did (it runs beside the loop); a failure is logged, not fatal.
+  const auto report_incidents = [&](const std::vector<IncidentOutcome>& outcomes) {
+    for (const IncidentOutcome& outcome : outcomes) {
+      if (outcome.error.empty()) {
+        err << "incident written: " << outcome.folder.string() << '\n';
+      } else {
+        err << "incident " << outcome.error << '\n';
+      }
+    }
   };
 
   StatusPrinter status(err);
@@ -302,7 +326,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       err << "controller fault: " << text << '\n';
       if (incidents) incidents->trigger(time_s, "controller fault " + text);
     }
-    if (incidents) incident_written(incidents->poll(time_s));
+    if (incidents) report_incidents(incidents->poll(time_s));
     status.cycle(time_s, [&] {
       return service_status_line(figures.cycles - 1, time_s, cycle, grid.cell_count(),
                                  last_joints ? &*last_joints : nullptr, latency.last_ms());
@@ -316,7 +340,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
   if (incidents) {
-    incident_written(incidents->flush());
+    report_incidents(incidents->flush());
     figures.incidents = incidents->incidents_written();
   }
   write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, link);

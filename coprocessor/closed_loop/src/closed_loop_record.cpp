@@ -161,4 +161,14 @@ const char* state_name(v1::ControllerState state) {
   }
 }
 
+std::optional<v1::ControllerState> state_named(const std::string& name) {
+  for (int value = v1::ControllerState_MIN; value <= v1::ControllerState_MAX; ++value) {
+    if (v1::ControllerState_IsValid(value) &&
+        name == state_name(static_cast<v1::ControllerState>(value))) {
+      return static_cast<v1::ControllerState>(value);
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace safecell

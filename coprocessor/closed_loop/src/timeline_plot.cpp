@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <string>
 
 namespace safecell {
@@ -37,17 +38,19 @@ cv::Scalar state_colour(v1::ControllerState state) {
 struct Panel {
   cv::Mat& image;
   int top;
-  double t_end;
+  double t_begin;
+  double t_end;  // > t_begin
   double y_max;
 
   int x(double t) const {
-    return kLeft + static_cast<int>(std::lround((kWidth - kLeft - kRight) * t / t_end));
+    const double share = std::clamp((t - t_begin) / (t_end - t_begin), 0.0, 1.0);
+    return kLeft + static_cast<int>(std::lround((kWidth - kLeft - kRight) * share));
   }
   int y(double value) const {
     const double share = std::clamp(value / y_max, 0.0, 1.0);
     return top + kPanelHeight - static_cast<int>(std::lround(share * kPanelHeight));
   }
-  void frame(const std::string& title, const PlotSpan& visit, const char* unit) const {
+  void frame(const std::string& title, const PlotSpan& visit, const std::string& unit) const {
     cv::rectangle(image, {x(visit.begin_s), top}, {x(visit.end_s), top + kPanelHeight},
                   visit_shade(), cv::FILLED);
     for (int k = 0; k <= 4; ++k) {
@@ -77,11 +80,12 @@ double nice_ceiling(double value) {
 
 }  // namespace
 
-cv::Mat timeline_plot(const ClosedLoopRecord& record, const std::vector<double>& distance_m,
-                      const PlotSpan& person_visit) {
+cv::Mat timeline_plot(const ClosedLoopRecord& record, const TimelineCurve& curve,
+                      const PlotSpan& shaded, std::optional<double> axis_begin_s) {
   const int height = kTop + 4 * (kPanelHeight + kGap) + 20;
   cv::Mat image(height, kWidth, CV_8UC3, cv::Scalar(255, 255, 255));
-  double t_end = 1.0;
+  const double t_begin = axis_begin_s.value_or(0.0);
+  double t_end = t_begin + 1.0;
   double speed_max = 0.0;
   double latency_max = 0.0;
   for (const JointRecord& sample : record.joints) {
@@ -90,11 +94,13 @@ cv::Mat timeline_plot(const ClosedLoopRecord& record, const std::vector<double>&
   }
   const StateFigures states = state_figures(record);
   for (const double latency : states.latency_ms) latency_max = std::max(latency_max, latency);
+  const auto panel = [&](int index, double y_max) {
+    return Panel{image, kTop + index * (kPanelHeight + kGap), t_begin, t_end, y_max};
+  };
 
   // 1: the fastest joint and the speed scale (scaled to the same axis's top).
-  const Panel speed{image, kTop, t_end, nice_ceiling(speed_max)};
-  speed.frame("robot speed: fastest joint (blue), speed scale x top (orange)", person_visit,
-              "rad/s");
+  const Panel speed = panel(0, nice_ceiling(speed_max));
+  speed.frame("robot speed: fastest joint (blue), speed scale x top (orange)", shaded, "rad/s");
   std::vector<cv::Point> fastest;
   std::vector<cv::Point> scale;
   for (const JointRecord& sample : record.joints) {
@@ -106,28 +112,28 @@ cv::Mat timeline_plot(const ClosedLoopRecord& record, const std::vector<double>&
   speed.polyline(scale, {0, 140, 255});
   speed.polyline(fastest, {200, 90, 30});
 
-  // 2: the person's distance to the robot.
-  double distance_max = 0.0;
-  for (const double d : distance_m) {
-    if (std::isfinite(d)) distance_max = std::max(distance_max, d);
+  // 2: the caller's curve.
+  double curve_max = 0.0;
+  for (const double value : curve.values) {
+    if (std::isfinite(value)) curve_max = std::max(curve_max, value);
   }
-  const Panel distance{image, kTop + (kPanelHeight + kGap), t_end, nice_ceiling(distance_max)};
-  distance.frame("the person's distance to the robot (FCL)", person_visit, "m");
+  const Panel second = panel(1, nice_ceiling(curve_max));
+  second.frame(curve.title, shaded, curve.unit);
   std::vector<cv::Point> points;
-  for (std::size_t i = 0; i < record.joints.size() && i < distance_m.size(); ++i) {
-    if (!std::isfinite(distance_m[i])) {
-      distance.polyline(points, {60, 60, 200});
+  for (std::size_t i = 0; i < curve.time_s.size() && i < curve.values.size(); ++i) {
+    if (!std::isfinite(curve.values[i])) {
+      second.polyline(points, {60, 60, 200});
       points.clear();
       continue;
     }
-    points.emplace_back(distance.x(record.joints[i].time_s), distance.y(distance_m[i]));
+    points.emplace_back(second.x(curve.time_s[i]), second.y(curve.values[i]));
   }
-  distance.polyline(points, {60, 60, 200});
+  second.polyline(points, {60, 60, 200});
 
   // 3: the state band.
-  const Panel state{image, kTop + 2 * (kPanelHeight + kGap), t_end, 1.0};
-  state.frame("state: moving green, slowed amber, stopped red, fault purple, waiting grey",
-              person_visit, "-");
+  const Panel state = panel(2, 1.0);
+  state.frame("state: moving green, slowed amber, stopped red, fault purple, waiting grey", shaded,
+              "-");
   for (std::size_t i = 0; i + 1 < record.joints.size(); ++i) {
     cv::rectangle(image, {state.x(record.joints[i].time_s), state.top + kPanelHeight / 4},
                   {state.x(record.joints[i + 1].time_s), state.top + 3 * kPanelHeight / 4},
@@ -135,15 +141,17 @@ cv::Mat timeline_plot(const ClosedLoopRecord& record, const std::vector<double>&
   }
 
   // 4: latency, exposure -> the map in the controller.
-  const Panel latency{image, kTop + 3 * (kPanelHeight + kGap), t_end, nice_ceiling(latency_max)};
-  latency.frame("latency: exposure to the map held by the controller", person_visit, "ms");
+  const Panel latency = panel(3, nice_ceiling(latency_max));
+  latency.frame("latency: exposure to the map held by the controller", shaded, "ms");
   std::vector<cv::Point> latencies;
   for (std::size_t k = 0; k < states.latency_ms.size(); ++k) {
     latencies.emplace_back(latency.x(states.latency_at_s[k]), latency.y(states.latency_ms[k]));
   }
   latency.polyline(latencies, {120, 60, 0});
-  cv::putText(image, "time since the start (s): 0 .. " + std::to_string(std::lround(t_end)),
-              {kLeft, height - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5, ink(), 1, cv::LINE_AA);
+  char axis[96];
+  std::snprintf(axis, sizeof axis, "time since the start (s): %.1f .. %.1f", t_begin, t_end);
+  cv::putText(image, axis, {kLeft, height - 8}, cv::FONT_HERSHEY_SIMPLEX, 0.5, ink(), 1,
+              cv::LINE_AA);
   return image;
 }
 

@@ -3,12 +3,14 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
+#include <future>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include "safecell/acquisition/exposure_sync.hpp"
 #include "safecell/files/atomic_write.hpp"
 
 namespace safecell {
@@ -33,6 +35,10 @@ void write_text(const fs::path& file, const std::string& text) {
   if (!out) throw FileError(file, "cannot be written");
 }
 
+void write_image(const fs::path& file, const cv::Mat& image) {
+  if (!cv::imwrite(file.string(), image)) throw FileError(file, "cannot be written");
+}
+
 void write_bits(const fs::path& file, const CellSet& map) {
   std::string bytes;
   bytes.reserve(map.words().size() * 8);
@@ -40,6 +46,123 @@ void write_bits(const fs::path& file, const CellSet& map) {
     for (int b = 0; b < 8; ++b) bytes.push_back(static_cast<char>((word >> (8 * b)) & 0xFFU));
   }
   write_text(file, bytes);
+}
+
+std::string hex(std::uint64_t value) {
+  std::ostringstream text;
+  text << std::hex << value;
+  return text.str();
+}
+
+nlohmann::ordered_json cycle_json(const IncidentCycle& cycle) {
+  nlohmann::ordered_json entry;
+  entry["cycle"] = cycle.index;
+  entry["exposure_s"] = cycle.exposure_s;
+  entry["pose_known"] = cycle.pose_known;
+  entry["q_rad"] = cycle.q;
+  entry["known_views"] = cycle.known_views;
+  entry["forbidden_cells"] = cycle.forbidden_cells;
+  entry["all_forbidden"] = cycle.all_forbidden;
+  entry["views"] = nlohmann::ordered_json::array();
+  for (const IncidentView& view : cycle.views) {
+    entry["views"].push_back(
+        {{"exposure_s", view.exposure_s ? nlohmann::ordered_json(*view.exposure_s)
+                                        : nlohmann::ordered_json(nullptr)},
+         {"fault", to_string(view.fault)},
+         {"detail", view.detail}});
+  }
+  return entry;
+}
+
+// What one incident holds, copied for its writer thread.
+struct IncidentContent {
+  fs::path folder;
+  std::string name;
+  std::vector<std::string> causes;
+  double trigger_s = 0.0;
+  std::vector<IncidentRecorder::Cycle> cycles;
+  std::vector<IncidentJointState> joints;
+};
+
+void write_joints(const fs::path& file, const std::vector<IncidentJointState>& joints) {
+  std::ostringstream text;
+  text << std::setprecision(17) << "time_s,state,speed_scale,q_rad,velocity_rad_s\n";
+  const auto spaced = [&text](const std::vector<double>& values) {
+    for (std::size_t j = 0; j < values.size(); ++j) text << (j ? " " : "") << values[j];
+  };
+  for (const IncidentJointState& joint : joints) {
+    text << joint.time_s << ',' << joint.state << ',' << joint.speed_scale << ',';
+    spaced(joint.q);
+    text << ',';
+    spaced(joint.velocity);
+    text << '\n';
+  }
+  write_text(file, text.str());
+}
+
+void write_into(const fs::path& partial, const IncidentContent& content,
+                const IncidentSetup& setup) {
+  fs::create_directories(partial / "maps");
+  nlohmann::ordered_json incident;
+  incident["format"] = kIncidentFormat;
+  incident["causes"] = content.causes;
+  incident["trigger_s"] = content.trigger_s;
+  incident["setup"] = {{"cell_file", setup.cell_file.string()},
+                       {"grid_fingerprint", hex(setup.grid_fingerprint)},
+                       {"lut_fingerprint", hex(setup.lut_fingerprint)},
+                       {"sync_error_s", setup.sync_error_s}};
+  write_text(partial / "cell.yaml", setup.cell_text);
+
+  const std::vector<std::string> cameras =
+      content.cycles.empty() ? std::vector<std::string>{} : content.cycles.front().cameras;
+  incident["cameras"] = cameras;
+  std::vector<std::ostringstream> frame_times(cameras.size());
+  for (std::size_t c = 0; c < cameras.size(); ++c) {
+    fs::create_directories(partial / "frames" / cameras[c]);
+    frame_times[c] << "file,time_s\n" << std::setprecision(17);
+    if (c < setup.reference.size()) {
+      fs::create_directories(partial / "reference");
+      write_image(partial / "reference" / (cameras[c] + ".png"), setup.reference[c]);
+    }
+  }
+  incident["cycles"] = nlohmann::ordered_json::array();
+  for (const IncidentRecorder::Cycle& kept : content.cycles) {
+    for (std::size_t c = 0; c < kept.images.size() && c < cameras.size(); ++c) {
+      if (kept.images[c].empty()) continue;  // the camera delivered nothing: no file
+      const fs::path file = incident_frame_file(partial, cameras[c], kept.cycle.index);
+      write_image(file, kept.images[c]);
+      frame_times[c] << file.filename().string() << ',' << *kept.cycle.views[c].exposure_s << '\n';
+    }
+    write_bits(incident_map_file(partial, kept.cycle.index), kept.map);
+    incident["cycles"].push_back(cycle_json(kept.cycle));
+  }
+  for (std::size_t c = 0; c < cameras.size(); ++c) {
+    write_text(partial / "frames" / cameras[c] / "frame_times.csv", frame_times[c].str());
+  }
+  write_joints(partial / "joints.csv", content.joints);
+  // Text from outside (causes, details) may hold bytes that are not UTF-8: replaced, not thrown.
+  write_text(partial / "incident.json",
+             incident.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+}
+
+// Writes under a hidden name and renames the whole folder into place; on any failure the
+// partial folder goes and the outcome says why. Runs on a writer thread.
+IncidentOutcome write_incident(const IncidentContent& content, const IncidentSetup& setup) {
+  const fs::path partial = content.folder / ("." + content.name + ".partial");
+  try {
+    fs::path final_folder = content.folder / content.name;
+    for (int k = 2; fs::exists(final_folder); ++k) {  // a name taken by an earlier run
+      final_folder = content.folder / (content.name + "-" + std::to_string(k));
+    }
+    fs::remove_all(partial);
+    write_into(partial, content, setup);
+    fs::rename(partial, final_folder);  // the folder appears whole or not at all
+    return {final_folder, ""};
+  } catch (const std::exception& error) {
+    std::error_code ignored;
+    fs::remove_all(partial, ignored);
+    return {{}, content.name + ": not written: " + error.what()};
+  }
 }
 
 }  // namespace
@@ -54,28 +177,49 @@ IncidentRecorder::IncidentRecorder(IncidentSettings settings) : settings_(std::m
                                 " s and after " + std::to_string(settings_.after_s) +
                                 " s, expected 0.1..60 s and 0..60 s");
   }
+  std::error_code ignored;
+  for (const auto& entry : fs::directory_iterator(settings_.folder, ignored)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(".incident-", 0) == 0 && name.size() > 8 &&
+        name.compare(name.size() - 8, 8, ".partial") == 0) {
+      fs::remove_all(entry.path(), ignored);
+    }
+  }
+}
+
+IncidentRecorder::~IncidentRecorder() {
+  for (std::future<IncidentOutcome>& write : writes_) write.wait();
 }
 
 void IncidentRecorder::add_cycle(double exposure_s, const FrameSet& frames,
                                  const ServiceCycle& cycle, const CellSet& map) {
   Cycle kept;
-  kept.exposure_s = exposure_s;
-  kept.index = cycle.index;
+  kept.cycle.index = cycle.index;
+  kept.cycle.exposure_s = exposure_s;
+  kept.cycle.pose_known = cycle.pose_known;
+  kept.cycle.q = cycle.q;
+  kept.cycle.known_views = cycle.known_views;
+  kept.cycle.forbidden_cells = cycle.forbidden_cells;
+  kept.cycle.all_forbidden = cycle.all_forbidden;
+  // Each camera's exposure on the same seconds as the set's: its offset from the set's median.
+  const double median_s = frames.frames.empty() ? 0.0 : median_exposure_s(frames);
   for (const CameraFrame& frame : frames.frames) {
     kept.cameras.push_back(frame.camera);
-    kept.images.push_back(frame.known() ? frame.image.clone() : cv::Mat());
+    const bool delivered = !frame.image.empty() && frame.image.type() == CV_8UC1;
+    // Copied: a camera may reuse its buffer. A faulted view's frame is kept for the pictures.
+    kept.images.push_back(delivered ? frame.image.clone() : cv::Mat());
+    IncidentView view;
+    if (delivered) view.exposure_s = exposure_s + (frame.exposure_s - median_s);
+    view.fault = frame.view.fault;
+    view.detail = frame.view.detail;
+    kept.cycle.views.push_back(std::move(view));
   }
-  kept.pose_known = cycle.pose_known;
-  kept.q = cycle.q;
-  kept.known_views = cycle.known_views;
-  kept.forbidden_cells = cycle.forbidden_cells;
-  kept.all_forbidden = cycle.all_forbidden;
   kept.map = map;
   cycles_.push_back(std::move(kept));
   forget_cycles_before(exposure_s - settings_.keep_s);
 }
 
-void IncidentRecorder::add_joint_state(RecordedJointState state) {
+void IncidentRecorder::add_joint_state(IncidentJointState state) {
   const double time_s = state.time_s;
   joints_.push_back(std::move(state));
   forget_joints_before(time_s - settings_.keep_s);
@@ -84,7 +228,7 @@ void IncidentRecorder::add_joint_state(RecordedJointState state) {
 void IncidentRecorder::forget_cycles_before(double time_s) {
   // While an incident is being recorded, everything from keep_s before its trigger stays.
   const double keep_from = trigger_s_ ? std::min(time_s, *trigger_s_ - settings_.keep_s) : time_s;
-  while (!cycles_.empty() && cycles_.front().exposure_s < keep_from) cycles_.pop_front();
+  while (!cycles_.empty() && cycles_.front().cycle.exposure_s < keep_from) cycles_.pop_front();
 }
 
 void IncidentRecorder::forget_joints_before(double time_s) {
@@ -93,87 +237,60 @@ void IncidentRecorder::forget_joints_before(double time_s) {
 }
 
 void IncidentRecorder::trigger(double time_s, const std::string& cause) {
-  if (written_ >= settings_.max_incidents) return;
+  if (handed_over_ >= settings_.max_incidents) return;
   if (!trigger_s_) trigger_s_ = time_s;
   if (causes_.size() < 32) causes_.push_back(cause);
 }
 
-std::optional<fs::path> IncidentRecorder::poll(double now_s) {
-  if (!trigger_s_ || now_s < *trigger_s_ + settings_.after_s) return std::nullopt;
-  return write();
+std::vector<IncidentOutcome> IncidentRecorder::poll(double now_s) {
+  if (trigger_s_ && now_s >= *trigger_s_ + settings_.after_s) hand_over();
+  return collect(false);
 }
 
-std::optional<fs::path> IncidentRecorder::flush() {
-  if (!trigger_s_) return std::nullopt;
-  return write();
+std::vector<IncidentOutcome> IncidentRecorder::flush() {
+  if (trigger_s_) hand_over();
+  return collect(true);
 }
 
-fs::path IncidentRecorder::write() {
-  const double trigger_s = *trigger_s_;
-  const std::string name = "incident-" + utc_stamp() + "-" + std::to_string(written_ + 1);
-  const fs::path partial = settings_.folder / ("." + name + ".partial");
-  fs::path final_folder = settings_.folder / name;
-  fs::remove_all(partial);
-  fs::create_directories(partial / "maps");
-
-  nlohmann::ordered_json incident;
-  incident["format"] = "safecell incident 1";
-  incident["causes"] = causes_;
-  incident["trigger_s"] = trigger_s;
-  incident["cycles"] = nlohmann::ordered_json::array();
-  std::vector<std::ofstream> frame_times;
-  std::vector<std::string> cameras;
-  for (const Cycle& cycle : cycles_) {
-    if (cameras.empty()) {
-      cameras = cycle.cameras;
-      for (const std::string& camera : cameras) {
-        fs::create_directories(partial / "frames" / camera);
-        frame_times.emplace_back(partial / "frames" / camera / "frame_times.csv");
-        frame_times.back() << "file,time_s\n" << std::setprecision(17);
-      }
+std::vector<IncidentOutcome> IncidentRecorder::collect(bool wait) {
+  std::vector<IncidentOutcome> outcomes = std::move(dropped_);
+  dropped_.clear();
+  for (auto write = writes_.begin(); write != writes_.end();) {
+    if (!wait && write->wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      ++write;
+      continue;
     }
-    nlohmann::ordered_json entry;
-    entry["cycle"] = cycle.index;
-    entry["exposure_s"] = cycle.exposure_s;
-    entry["pose_known"] = cycle.pose_known;
-    entry["q_rad"] = cycle.q;
-    entry["known_views"] = cycle.known_views;
-    entry["forbidden_cells"] = cycle.forbidden_cells;
-    entry["all_forbidden"] = cycle.all_forbidden;
-    const std::string stem = std::to_string(cycle.index);
-    for (std::size_t c = 0; c < cycle.images.size() && c < cameras.size(); ++c) {
-      if (cycle.images[c].empty()) continue;  // the view was unknown: no frame
-      const std::string file = stem + ".png";
-      if (!cv::imwrite((partial / "frames" / cameras[c] / file).string(), cycle.images[c])) {
-        throw FileError(partial / "frames" / cameras[c] / file, "cannot be written");
-      }
-      frame_times[c] << file << ',' << cycle.exposure_s << '\n';
-    }
-    write_bits(partial / "maps" / (stem + ".bits"), cycle.map);
-    incident["cycles"].push_back(entry);
+    outcomes.push_back(write->get());
+    if (outcomes.back().error.empty()) ++written_;
+    write = writes_.erase(write);
   }
-  incident["cameras"] = cameras;
-  for (std::size_t c = 0; c < frame_times.size(); ++c) {
-    frame_times[c].close();
-    if (!frame_times[c]) throw FileError(partial / "frames" / cameras[c], "frame_times.csv");
-  }
-  std::ostringstream joints;
-  joints << std::setprecision(17) << "time_s,state,speed_scale,q_rad\n";
-  for (const RecordedJointState& joint : joints_) {
-    joints << joint.time_s << ',' << joint.state << ',' << joint.speed_scale << ',';
-    for (std::size_t j = 0; j < joint.q.size(); ++j) joints << (j ? " " : "") << joint.q[j];
-    joints << '\n';
-  }
-  write_text(partial / "joints.csv", joints.str());
-  write_text(partial / "incident.json", incident.dump(2) + "\n");
-  fs::rename(partial, final_folder);  // the folder appears whole or not at all
+  return outcomes;
+}
 
-  ++written_;
+void IncidentRecorder::hand_over() {
+  ++handed_over_;
+  const std::string name = "incident-" + utc_stamp() + "-" + std::to_string(handed_over_);
+  if (writes_.size() >= kMaxWritesInFlight) {
+    dropped_.push_back({{},
+                        name + ": dropped, " + std::to_string(writes_.size()) +
+                            " incidents are still being written"});
+  } else {
+    // The writer's own copy: the images are shared, never written again by the recorder.
+    IncidentContent content{settings_.folder,
+                            name,
+                            causes_,
+                            *trigger_s_,
+                            std::vector<Cycle>(cycles_.begin(), cycles_.end()),
+                            std::vector<IncidentJointState>(joints_.begin(), joints_.end())};
+    writes_.push_back(
+        std::async(std::launch::async, [content = std::move(content), setup = &settings_.setup] {
+          return write_incident(content, *setup);
+        }));
+  }
   trigger_s_.reset();
   causes_.clear();
-  if (!cycles_.empty()) forget_cycles_before(cycles_.back().exposure_s - settings_.keep_s);
+  if (!cycles_.empty()) forget_cycles_before(cycles_.back().cycle.exposure_s - settings_.keep_s);
   if (!joints_.empty()) forget_joints_before(joints_.back().time_s - settings_.keep_s);
-  return final_folder;
 }
 
 }  // namespace safecell

@@ -100,5 +100,7 @@ struct StateFigures {
 StateFigures state_figures(const ClosedLoopRecord& record);
 
 const char* state_name(v1::ControllerState state);
+// The state state_name() names `name`; nullopt for "unknown" or another word.
+std::optional<v1::ControllerState> state_named(const std::string& name);
 
 }  // namespace safecell
