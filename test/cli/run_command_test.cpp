@@ -185,7 +185,7 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
   const std::uint16_t port = free_udp_port();
   Controller controller(recording(), out, port);
   auto arguments = run_arguments(recording(), controller, port, out);
-  arguments.insert(arguments.end(), {"--reference-sets", "5"});
+  arguments.insert(arguments.end(), {"--record-reference", "--reference-sets", "5"});
   const test::CliRun run = test::safecell_cli(arguments);
   ASSERT_EQ(run.exit_code, 0) << run.err << "\ncontroller:\n" << read_text(controller.log());
   EXPECT_NE(run.out.find("stopped: every camera stopped delivering"), std::string::npos) << run.out;
@@ -343,10 +343,26 @@ TEST_F(RunCommand, AControllerThatNeverAnswersIsNamedAfterTheTimeout) {
   EXPECT_NE(run.err.find("waited 1 s"), std::string::npos) << run.err;
 }
 
+// No reference is ever recorded without being asked: a person in the cell at a restart would
+// become part of the empty cell.
+TEST_F(RunCommand, TheReferenceIsGivenOrRecordedOnRequest) {
+  for (const bool both : {false, true}) {
+    std::vector<std::string> arguments{"run", "--cell", recording().cell_file.string()};
+    if (both) {
+      arguments.insert(arguments.end(),
+                       {"--reference", recording().reference.string(), "--record-reference"});
+    }
+    const test::CliRun run = test::safecell_cli(arguments);
+    EXPECT_EQ(run.exit_code, kExitBadInput) << run.err;
+    EXPECT_NE(run.err.find("either --reference DIR"), std::string::npos) << run.err;
+  }
+}
+
 TEST_F(RunCommand, BadAddressesAreRefused) {
   for (const std::string address : {"nohost", "1.2.3.4:", "1.2.3.4:99999", ":80", "a:b"}) {
-    const test::CliRun run = test::safecell_cli(
-        {"run", "--cell", recording().cell_file.string(), "--controller", address});
+    const test::CliRun run =
+        test::safecell_cli({"run", "--cell", recording().cell_file.string(), "--reference",
+                            recording().reference.string(), "--controller", address});
     EXPECT_EQ(run.exit_code, kExitBadInput) << address;
     EXPECT_NE(run.err.find("--controller '" + address + "'"), std::string::npos) << run.err;
   }

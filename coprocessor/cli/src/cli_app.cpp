@@ -475,8 +475,10 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "This end's UDP address, HOST:PORT (the controller's link.coprocessor)")
       ->capture_default_str();
   run_command->add_option("--reference", run.reference_dir,
-                          "Folder of reference images, <camera>.png each (the empty cell); "
-                          "without it they are recorded at the start, the cell empty of people");
+                          "Folder of reference images, <camera>.png each (the empty cell)");
+  run_command->add_flag("--record-reference", run.record_reference,
+                        "Record the reference images at the start instead (nobody may be in the "
+                        "cell; the robot may move) and write them to <out>/reference");
   run_command
       ->add_option("--reference-sets", run.reference_sets,
                    "Frame sets whose median is the recorded reference")

@@ -125,13 +125,13 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
   const fs::path out_dir = options.out_dir.empty() ? folder / "replay" : fs::path(options.out_dir);
   fs::create_directories(out_dir);
 
-  // The cycle the pictures show: the first exposed at or after the trigger, else the last.
-  std::size_t shown = incident.cycles.empty() ? 0 : incident.cycles.size() - 1;
+  // The cycle the pictures show: of those the pipeline ran on, the first exposed at or after the
+  // trigger, else the last before it.
+  std::optional<std::size_t> shown;
   for (std::size_t i = 0; i < incident.cycles.size(); ++i) {
-    if (incident.cycles[i].exposure_s >= incident.trigger_s) {
-      shown = i;
-      break;
-    }
+    if (!incident.cycles[i].all_forbidden.empty()) continue;
+    shown = i;
+    if (incident.cycles[i].exposure_s >= incident.trigger_s) break;
   }
   std::vector<ReplayedCycle> replayed;
   std::vector<CellIndex> path;

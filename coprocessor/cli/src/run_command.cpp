@@ -87,9 +87,20 @@ void check_options(const RunOptions& options) {
   if (!(options.sync_error_ms >= 0.0 && options.sync_error_ms <= 100.0)) {
     bad_option("--sync-error", std::to_string(options.sync_error_ms), "ms, 0..100");
   }
-  if (options.reference_dir.empty() &&
-      (options.reference_sets < 1 || options.reference_sets > 1000)) {
+  // Never a reference recorded by default: after a restart with a person in the cell, that
+  // person would become part of the empty cell and go unseen while standing there.
+  if (options.reference_dir.empty() == !options.record_reference) {
+    bad_option("--reference", options.reference_dir,
+               "either --reference DIR (the empty cell's images, <camera>.png each) or "
+               "--record-reference (record them now, nobody in the cell), not both");
+  }
+  if (options.record_reference && (options.reference_sets < 1 || options.reference_sets > 1000)) {
     bad_option("--reference-sets", std::to_string(options.reference_sets), "1..1000");
+  }
+  if (!(options.incident_seconds == 0.0 ||
+        (options.incident_seconds >= 0.1 && options.incident_seconds <= 60.0))) {
+    bad_option("--incident-seconds", std::to_string(options.incident_seconds),
+               "0 (no incidents) or 0.1..60 s");
   }
   if (!(options.connect_timeout_s > 0.0 && options.connect_timeout_s <= 3600.0)) {
     bad_option("--connect-timeout", std::to_string(options.connect_timeout_s), "s, up to 3600");
@@ -129,6 +140,35 @@ std::string read_cell_text(const std::string& path) {
   if (!in) throw FileError(path, "cannot be read again");
   return text.str();
 }
+
+// The controller's stop request when the service ends by an error after the session opened: the
+// normal end sends its own, naming its cause. One datagram; the controller's watchdog stops the
+// robot anyway when the maps end, the request only names why.
+class StopRequestOnError {
+ public:
+  explicit StopRequestOnError(CoprocessorLink& link) : link_(link) {}
+  ~StopRequestOnError() {
+    if (sent_) return;
+    try {
+      link_.send_stop_request(v1::FAULT_CAUSE_OPERATOR, "safecell run ended by an error");
+    } catch (...) {  // NOLINT(bugprone-empty-catch): nothing more can be done on the way out
+    }
+  }
+  StopRequestOnError(const StopRequestOnError&) = delete;
+  StopRequestOnError& operator=(const StopRequestOnError&) = delete;
+  void send(const std::string& why) {
+    sent_ = true;
+    link_.send_stop_request(v1::FAULT_CAUSE_OPERATOR, why);
+  }
+
+ private:
+  CoprocessorLink& link_;
+  bool sent_ = false;
+};
+
+// What the summary counts an all-forbidden cycle under: its reason without the figures after the
+// colon ("robot pose unknown: uncertain by 23.4 mm" -> "robot pose unknown").
+std::string reason_kind(const std::string& reason) { return reason.substr(0, reason.find(':')); }
 
 // Every camera has stopped delivering (the recordings have ended, the devices are gone).
 std::optional<std::string> all_cameras_stopped(const FrameSet& set) {
@@ -198,11 +238,11 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
 
   std::vector<cv::Mat> reference;
-  if (options.reference_dir.empty()) {
+  if (options.record_reference) {
     reference = record_reference_images(cameras, options.reference_sets, err);
     write_reference_images(out_dir / "reference", cell, reference);
     err << "reference images written to " << (out_dir / "reference").string()
-        << " (give them as --reference next time)\n";
+        << " (check them: nobody may be in them; then give them as --reference)\n";
   } else {
     reference = read_reference_images(options.reference_dir, cell);
   }
@@ -223,6 +263,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     err << "stopped (" << *StopSignals::received() << ") before the controller answered\n";
     return 0;
   }
+  StopRequestOnError stop_request(link);
   err << "session open: watchdog " << link.config().watchdog_us / 1000 << " ms, data age "
       << link.config().max_data_age_us / 1000 << " ms (the controller's)\n";
 
@@ -300,18 +341,22 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     // The joint stream until a little past the exposure, so that the pose there is interpolated
     // between samples rather than extrapolated (a camera's frame mostly arrives later than this
     // anyway; a recording played live is stamped as it is handed out).
-    service.serve_link(
-        std::max(Clock::now(), steady_time_point(median_exposure_s(set)) + kJointStreamLead));
+    // Capped: a camera whose stamps run ahead of the steady clock must not hold the loop.
+    const Clock::time_point now = Clock::now();
+    service.serve_link(std::clamp(steady_time_point(median_exposure_s(set)) + kJointStreamLead, now,
+                                  now + kJointStreamLead));
     const ServiceCycle& cycle = service.process(set);
     ++figures.cycles;
     if (!cycle.all_forbidden.empty()) {
       ++figures.all_forbidden_cycles;
-      ++figures.all_forbidden_because[cycle.all_forbidden];
+      ++figures.all_forbidden_because[reason_kind(cycle.all_forbidden)];
     }
     if (cycle.known_views < service_settings.camera_threshold) ++figures.cycles_short_of_views;
     figures.features_ms.push_back(cycle.times.features_ms);
     figures.fusion_ms.push_back(cycle.times.fusion_ms);
-    const double time_s = seconds_since_start(cycle.exposure_ns);
+    // A set without a known frame has no exposure: the cycle is then placed at the clock's now.
+    const double time_s =
+        seconds_since_start(cycle.exposure_ns != 0 ? cycle.exposure_ns : steady_now_ns());
     latency.sent(cycle.map_version, time_s);
     const bool newly_all_forbidden = !cycle.all_forbidden.empty() && !was_all_forbidden;
     was_all_forbidden = !cycle.all_forbidden.empty();
@@ -336,7 +381,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
 
   // A clean stop: the controller holds the robot on the request (latched until its operator
   // acknowledges) instead of finding the maps gone.
-  link.send_stop_request(v1::FAULT_CAUSE_OPERATOR, "safecell run stopped: " + stopped_because);
+  stop_request.send("safecell run stopped: " + stopped_because);
   service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
   if (incidents) {

@@ -51,6 +51,9 @@ void AppliedMapLatency::joint_state(const JointRecord& sample, const JointRecord
   const double applied_s =
       sample.applied_map_time_s > 0.0 ? sample.applied_map_time_s : sample.time_s;
   last_ms_ = (applied_s - exposure->second) * 1e3;
+  // The maps up to this one will not be applied again: forgotten, so a long run keeps few.
+  std::erase_if(exposure_of_,
+                [&sample](const auto& entry) { return entry.first <= sample.applied_map_version; });
 }
 
 }  // namespace safecell

@@ -18,9 +18,10 @@ struct RunOptions {
   std::string lut_cache;                       // empty: the default cache folder
   std::string controller = "127.0.0.1:47701";  // the controller's link address (its link.listen)
   std::string listen = "0.0.0.0:47700";        // this end's (the controller's link.coprocessor)
-  std::string reference_dir;             // <camera>.png per camera; empty: recorded at the start
-  std::size_t reference_sets = 30;       // frame sets whose median is the recorded reference
-  double seconds = 0.0;                  // 0: until stopped
+  std::string reference_dir;                   // <camera>.png per camera (the empty cell)
+  bool record_reference = false;    // instead: record it at the start (nobody may be in the cell)
+  std::size_t reference_sets = 30;  // frame sets whose median is the recorded reference
+  double seconds = 0.0;             // 0: until stopped
   std::string out_dir = "safecell-run";  // the recorded reference, incidents/, run_summary.json
   // The incident recorder keeps this many seconds before each stop or fault (0: off). Each second
   // holds every camera's frames: about 50 MB a second for four 704 x 576 cameras at 30 frames/s.
