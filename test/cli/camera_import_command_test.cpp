@@ -87,9 +87,17 @@ TEST(CameraImportCommand, RosAndMcCalibFilesBecomeCalibrationFiles) {
   EXPECT_NE(ros.out.find("camera 'left', 640 x 480 px"), std::string::npos) << ros.out;
   expect_camera(read_camera_calibration(scratch.path() / "left_cell.yaml", "left"));
 
-  const auto rig = test::safecell_cli(
-      {"camera", "import", "--mc-calib", (scratch.path() / "rig.yml").string(), "--pose",
-       (scratch.path() / "pose.yaml").string(), "--out", (scratch.path() / "rig").string()});
+  std::vector<std::string> rig_arguments{"camera",     "import",
+                                         "--mc-calib", (scratch.path() / "rig.yml").string(),
+                                         "--pose",     (scratch.path() / "pose.yaml").string(),
+                                         "--out",      (scratch.path() / "rig").string()};
+  // MC-Calib's unit is never guessed.
+  const auto no_unit = test::safecell_cli(rig_arguments);
+  EXPECT_EQ(no_unit.exit_code, kExitBadInput);
+  EXPECT_NE(no_unit.err.find("--units-m"), std::string::npos) << no_unit.err;
+  EXPECT_FALSE(fs::exists(scratch.path() / "rig"));
+  rig_arguments.insert(rig_arguments.end(), {"--units-m", "0.001"});
+  const auto rig = test::safecell_cli(rig_arguments);
   ASSERT_EQ(rig.exit_code, 0) << rig.err;
   expect_camera(read_camera_calibration(scratch.path() / "rig" / "cam0.yaml", "cam0"));
 }

@@ -37,6 +37,11 @@ void run_camera_import(const CameraImportOptions& options, std::ostream& out) {
     say_written(options.out, camera, out);
     return;
   }
+  if (!(options.units_m > 0.0 && options.units_m <= 1.0)) {
+    bad_option("--units-m", options.units_m == 0.0 ? "" : std::to_string(options.units_m),
+               "metres per unit of the MC-Calib file's translations, the unit of its board's "
+               "square_size (0.001 for mm, 0.01 for cm, 1 for m): MC-Calib does not record it");
+  }
   const auto cameras = read_mc_calib_cameras(options.mc_calib_file, options.units_m);
   fs::create_directories(options.out);
   for (const McCalibCamera& imported : cameras) {

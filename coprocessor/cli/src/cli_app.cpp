@@ -413,10 +413,10 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "Pose file: the camera's cell pose (ROS), or the reference camera's (MC-Calib)")
       ->required()
       ->check(CLI::ExistingFile);
-  import_command
-      ->add_option("--units-m", import.units_m,
-                   "MC-Calib: metres per unit of its translations (its board's unit)")
-      ->capture_default_str();
+  import_command->add_option(
+      "--units-m", import.units_m,
+      "MC-Calib (required): metres per unit of its translations, the unit of its "
+      "board's square_size (0.001 for mm, 0.01 for cm)");
   import_command
       ->add_option("--name", import.name,
                    "The camera's name (ROS), or the stem of the names (MC-Calib: cam0, cam1, ...)")

@@ -26,6 +26,7 @@
 #include "safecell/pipeline/sensing_pipeline.hpp"
 #include "safecell/service/incident_recorder.hpp"
 #include "safecell/service/sensing_service.hpp"
+#include "safecell/validation/percentile.hpp"
 #include "scene_options.hpp"
 #include "service_setup.hpp"
 #include "service_status.hpp"
@@ -196,13 +197,6 @@ struct RunFigures {
   std::vector<double> features_ms;
   std::vector<double> fusion_ms;
 };
-
-double percentile(std::vector<double> values, double share) {
-  if (values.empty()) return 0.0;
-  const auto at = static_cast<std::size_t>(share * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at), values.end());
-  return values[at];
-}
 
 void write_run_summary(const fs::path& file, const RunFigures& figures, double seconds,
                        const std::string& stopped_because, const CoprocessorLink& link) {

@@ -15,7 +15,9 @@ struct CameraImportOptions {
   // The pose file (this project's calibration format with only the cell_to_camera keys): of the
   // camera itself for ROS, of the reference camera for MC-Calib.
   std::string pose_file;
-  double units_m = 0.001;    // MC-Calib: metres per unit of its translations (its board's unit)
+  // MC-Calib: metres per unit of its translations (its board's unit). Required: MC-Calib does
+  // not record the unit, and a wrong guess puts the cameras 10 or 1,000 times off. 0: not given.
+  double units_m = 0.0;
   std::string name = "cam";  // the camera's name (ROS) or the names' stem (MC-Calib: cam0, cam1...)
   std::string out;           // ROS: the file to write; MC-Calib: the folder for <name><N>.yaml
 };
