@@ -53,11 +53,13 @@ cv::Mat camera_matrix(const CameraIntrinsics& k) {
   return (cv::Mat_<double>(3, 3) << k.fx_px, 0, k.cx_px, 0, k.fy_px, k.cy_px, 0, 0, 1);
 }
 
-// The cameras as MC-Calib saves them, camera 0 the reference, translations in millimetres.
-void write_mc_calib(const fs::path& file, const std::vector<PinholeCamera>& cameras) {
+// The cameras as MC-Calib saves them, camera `reference` the reference (0 unless said),
+// translations in millimetres.
+void write_mc_calib(const fs::path& file, const std::vector<PinholeCamera>& cameras,
+                    std::size_t reference = 0) {
   cv::FileStorage out(file.string(), cv::FileStorage::WRITE);
   out << "nb_camera" << static_cast<int>(cameras.size());
-  const Eigen::Isometry3d cell_to_reference = cameras[0].cell_to_camera();
+  const Eigen::Isometry3d cell_to_reference = cameras[reference].cell_to_camera();
   for (std::size_t i = 0; i < cameras.size(); ++i) {
     const CameraIntrinsics& k = cameras[i].intrinsics();
     // MC-Calib's group holds reference -> camera; it saves the inverse.
@@ -124,6 +126,25 @@ TEST(McCalibImport, EveryCameraProjectsAsTheOriginalOnceItsReferenceIsPlacedInTh
   EXPECT_GT(
       worst_pixel_error(cameras[1], mc_calib_camera_in_cell(in_metres[1], cell_to_reference, "x")),
       10.0);
+}
+
+// The cell pose given is camera 0's: a group whose reference is another camera is named.
+TEST(McCalibImport, AGroupWhoseReferenceIsNotCameraZeroIsNamed) {
+  const TempDirectory folder;
+  const fs::path file = folder.path() / "calibrated_cameras_data.yml";
+  const std::vector<PinholeCamera> cameras{placed("a", lens(460, -0.12), {1.9, 1.9, 2.9}),
+                                           placed("b", lens(430, -0.08), {-1.9, 1.9, 2.8})};
+  write_mc_calib(file, cameras, 1);
+  try {
+    (void)read_mc_calib_cameras(file, 0.001);
+    ADD_FAILURE() << "a group with camera 1 as its reference was taken";
+  } catch (const CameraError& error) {
+    EXPECT_NE(std::string(error.what()).find("camera_1 has it: the group's reference"),
+              std::string::npos)
+        << error.what();
+  }
+  write_mc_calib(file, cameras, 0);  // the control
+  EXPECT_EQ(read_mc_calib_cameras(file, 0.001).size(), 2U);
 }
 
 TEST(McCalibImport, AFisheyeCameraAndAMissingCameraAreNamed) {

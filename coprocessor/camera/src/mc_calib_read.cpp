@@ -55,6 +55,28 @@ McCalibCamera read_camera(const CalibrationReader& reader, const std::string& so
   return camera;
 }
 
+bool is_identity(const Eigen::Isometry3d& pose) {
+  return pose.linear().isApprox(Eigen::Matrix3d::Identity(), 1e-6) &&
+         pose.translation().norm() < 1e-6;
+}
+
+// The cell pose given with the file is camera 0's: MC-Calib's poses must then be relative to it.
+// A group whose reference is another camera is named, not placed wrongly.
+void check_reference_camera(const std::string& source, const std::vector<McCalibCamera>& cameras) {
+  if (is_identity(cameras.front().camera_to_reference)) return;
+  std::string reference = "none of the cameras has it";
+  for (const McCalibCamera& camera : cameras) {
+    if (is_identity(camera.camera_to_reference)) {
+      reference = "camera_" + std::to_string(camera.index) + " has it: the group's reference";
+      break;
+    }
+  }
+  throw_camera_error(source, "camera_0: camera_pose_matrix",
+                     "is not the identity, expected camera 0 to be the reference camera whose "
+                     "cell pose is given (" +
+                         reference + ")");
+}
+
 }  // namespace
 
 std::vector<McCalibCamera> read_mc_calib_cameras(const std::filesystem::path& path,
@@ -86,6 +108,7 @@ std::vector<McCalibCamera> read_mc_calib_cameras(const std::filesystem::path& pa
       where += ": " + key;
       cameras.push_back(read_camera(CalibrationReader(where, node), source, index, units_m));
     }
+    check_reference_camera(source, cameras);
     return cameras;
   } catch (const cv::Exception& error) {
     throw_camera_error(source, "(file)",

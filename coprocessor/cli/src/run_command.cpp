@@ -44,13 +44,14 @@ volatile std::sig_atomic_t g_stop_signal = 0;
 void on_stop_signal(int signal) { g_stop_signal = signal; }
 
 // SIGINT and SIGTERM ask the loop to stop (it then sends the controller a stop request) while
-// this object lives; the handlers before it come back after.
+// this object lives; the handlers before it come back after. Made once the session is about to
+// open: before, while the tables build, Ctrl-C ends the program as usual.
 class StopSignals {
  public:
-  StopSignals()
-      : previous_interrupt_(std::signal(SIGINT, on_stop_signal)),
-        previous_terminate_(std::signal(SIGTERM, on_stop_signal)) {
-    g_stop_signal = 0;
+  StopSignals() {
+    g_stop_signal = 0;  // before the handlers: a signal from now on is kept
+    previous_interrupt_ = std::signal(SIGINT, on_stop_signal);
+    previous_terminate_ = std::signal(SIGTERM, on_stop_signal);
   }
   ~StopSignals() {
     std::signal(SIGINT, previous_interrupt_);
@@ -67,8 +68,8 @@ class StopSignals {
 
  private:
   using Handler = void (*)(int);
-  Handler previous_interrupt_;
-  Handler previous_terminate_;
+  Handler previous_interrupt_ = nullptr;
+  Handler previous_terminate_ = nullptr;
 };
 
 void check_options(const RunOptions& options) {
@@ -218,7 +219,6 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
 
 int run_service(const RunOptions& options, std::ostream& out, std::ostream& err) {
   check_options(options);
-  const StopSignals signals;
   const UdpEndpoint controller = udp_address("--controller", options.controller, 1);
   const UdpEndpoint listen = udp_address("--listen", options.listen, 0);
   const fs::path out_dir(options.out_dir);
@@ -253,6 +253,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   err << "link: " << listen.address << ':' << transport.local_port() << " -> " << options.controller
       << " (grid fingerprint " << std::hex << grid.fingerprint() << ", LUT fingerprint "
       << luts.set.fingerprint << std::dec << ")\n";
+  const StopSignals signals;
   if (!open_session(link, options, err)) {
     err << "stopped (" << *StopSignals::received() << ") before the controller answered\n";
     return 0;
@@ -313,6 +314,8 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     }
   };
 
+  const auto frame_period =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.fps));
   StatusPrinter status(err);
   RunFigures figures;
   std::size_t faults_reported = 0;
@@ -327,10 +330,16 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       stopped_because = "--seconds " + fixed(options.seconds, 1) + " ran out";
       break;
     }
+    const Clock::time_point acquired_at = Clock::now();
     const FrameSet set = cameras.acquire();
     if (const auto stopped = all_cameras_stopped(set)) {
       stopped_because = *stopped;
       break;
+    }
+    if (set.known_count() == 0) {
+      // No camera gave a frame (devices gone, streams down): the cycle still sends its
+      // all-forbidden map, at the frame rate, not as fast as failing cameras return.
+      service.serve_link(acquired_at + frame_period);
     }
     // The joint stream until a little past the exposure, so that the pose there is interpolated
     // between samples rather than extrapolated (a camera's frame mostly arrives later than this
