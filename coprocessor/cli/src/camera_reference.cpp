@@ -7,6 +7,7 @@
 
 #include "png_output.hpp"
 #include "progress_bar.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/reference/median_image.hpp"
 
@@ -67,8 +68,8 @@ std::vector<cv::Mat> record_reference_images(FrameSetAcquirer& acquirer, std::si
     for (std::size_t c = 0; c < set.frames.size(); ++c) {
       const CameraFrame& frame = set.frames[c];
       if (!frame.known()) {
-        throw std::invalid_argument("reference: frame set " + std::to_string(s + 1) + " of " +
-                                    std::to_string(sets) + ": " + frame.view.detail);
+        throw InputError("reference: frame set " + std::to_string(s + 1) + " of " +
+                         std::to_string(sets) + ": " + frame.view.detail);
       }
       frames[c].push_back(frame.image);
     }

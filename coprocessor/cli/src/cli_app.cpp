@@ -3,8 +3,6 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 
-#include "safecell/camera/camera_error.hpp"
-#include "safecell/cell/cell_error.hpp"
 #include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/camera_import_command.hpp"
 #include "safecell/cli/cell_coverage_command.hpp"
@@ -20,9 +18,7 @@
 #include "safecell/cli/sim_render_command.hpp"
 #include "safecell/cli/validate_command.hpp"
 #include "safecell/closed_loop/controller_setup.hpp"
-#include "safecell/files/atomic_write.hpp"
-#include "safecell/link/link_errors.hpp"
-#include "safecell/lut/lut_file.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "scene_options.hpp"
 
 namespace safecell {
@@ -548,28 +544,12 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
     // --help and --version end here too, with 0; every refused command line is bad input.
     return app.exit(error, out, err) == 0 ? 0 : kExitBadInput;
   }
+  // The one place errors become exit codes: what a user can fix (InputError and its kinds, each
+  // naming the file, field or option) is 2; anything else is a broken precondition, 70.
   try {
     action();
     return exit_code;
-  } catch (const CellError& error) {
-    err << "error: " << error.what() << '\n';
-    return kExitBadInput;
-  } catch (const std::invalid_argument& error) {
-    err << "error: " << error.what() << '\n';
-    return kExitBadInput;
-  } catch (const FileError& error) {
-    err << "error: " << error.what() << '\n';
-    return kExitBadInput;
-  } catch (const LutFileError& error) {
-    err << "error: " << error.what() << '\n';
-    return kExitBadInput;
-  } catch (const LinkSetupError& error) {
-    err << "error: " << error.what() << '\n';
-    return kExitBadInput;
-  } catch (const CameraError& error) {
-    err << "error: " << error.what() << '\n';
-    return kExitBadInput;
-  } catch (const ClosedLoopSetupError& error) {
+  } catch (const InputError& error) {
     err << "error: " << error.what() << '\n';
     return kExitBadInput;
   } catch (const std::exception& error) {

@@ -15,6 +15,7 @@
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cli/cli_app.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/lut/lut_cache.hpp"
 #include "safecell/lut/lut_file.hpp"
 
@@ -40,7 +41,7 @@ std::vector<fs::path> lut_files_in(const fs::path& path) {
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) {
-    throw std::invalid_argument("folder '" + path.string() + "' holds no LUT file (*.sclut)");
+    throw InputError("folder '" + path.string() + "' holds no LUT file (*.sclut)");
   }
   return files;
 }
@@ -177,7 +178,7 @@ int run_luts_info(const LutsInfoOptions& options, std::ostream& out, std::ostrea
     reports.push_back(summary_json(file, summary));
   }
   if (reports.empty()) {
-    throw std::invalid_argument("folder '" + options.path + "' holds no usable LUT file");
+    throw InputError("folder '" + options.path + "' holds no usable LUT file");
   }
   if (options.json) {
     out << (reports.size() == 1 ? reports[0] : reports).dump(2) << '\n';

@@ -10,6 +10,7 @@
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/lut/lut_cache.hpp"
 #include "safecell/lut/lut_file.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
@@ -83,7 +84,7 @@ void print_agreement(const std::vector<CameraAgreement>& agreement, double min_c
 }  // namespace
 
 void run_luts_record(const LutsRecordOptions& options, std::ostream& out, std::ostream& err) {
-  if (options.out_dir.empty()) throw std::invalid_argument("luts record needs --out DIR");
+  if (options.out_dir.empty()) throw InputError("luts record needs --out DIR");
   const CellModel cell = load_cell_model(load_cell_file_or_default(options.cell_path));
   const CspaceGrid grid = make_grid(cell.config);
   const auto start = std::chrono::steady_clock::now();

@@ -18,6 +18,7 @@
 #include "safecell/cli/text_table.hpp"
 #include "safecell/closed_loop/report_page.hpp"
 #include "safecell/closed_loop/timeline_plot.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
@@ -48,20 +49,19 @@ std::string hex(std::uint64_t value) {
 void check_setup(const Incident& incident, const fs::path& cell_path, const CellModel& cell,
                  const CspaceGrid& grid) {
   if (file_text(cell_path) != incident.setup.cell_text) {
-    throw std::invalid_argument(cell_path.string() +
-                                " is not the cell file the incident was recorded with (its text "
-                                "is in the incident's cell.yaml); give that one as --cell");
+    throw InputError(cell_path.string() +
+                     " is not the cell file the incident was recorded with (its text "
+                     "is in the incident's cell.yaml); give that one as --cell");
   }
   std::vector<std::string> names;
   for (const PinholeCamera& camera : cell.cameras) names.push_back(camera.name());
   if (names != incident.cameras) {
-    throw std::invalid_argument(cell_path.string() + ": its cameras are not the incident's");
+    throw InputError(cell_path.string() + ": its cameras are not the incident's");
   }
   if (grid.fingerprint() != incident.setup.grid_fingerprint) {
-    throw std::invalid_argument(cell_path.string() + ": grid fingerprint " +
-                                hex(grid.fingerprint()) + ", the incident was recorded with " +
-                                hex(incident.setup.grid_fingerprint) +
-                                " (a file the cell names has changed: the robot?)");
+    throw InputError(cell_path.string() + ": grid fingerprint " + hex(grid.fingerprint()) +
+                     ", the incident was recorded with " + hex(incident.setup.grid_fingerprint) +
+                     " (a file the cell names has changed: the robot?)");
   }
 }
 
@@ -114,9 +114,9 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
   check_setup(incident, cell_path, cell, grid);
   const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
   if (luts.set.fingerprint != incident.setup.lut_fingerprint) {
-    throw std::invalid_argument("the tables for " + cell_path.string() + " have fingerprint " +
-                                hex(luts.set.fingerprint) + ", the incident was recorded with " +
-                                hex(incident.setup.lut_fingerprint));
+    throw InputError("the tables for " + cell_path.string() + " have fingerprint " +
+                     hex(luts.set.fingerprint) + ", the incident was recorded with " +
+                     hex(incident.setup.lut_fingerprint));
   }
   const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
   const std::vector<cv::Mat> reference = read_reference_images(folder / "reference", cell);

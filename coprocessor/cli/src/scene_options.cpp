@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "safecell/cli/text_table.hpp"
+#include "safecell/errors/input_error.hpp"
 
 namespace safecell {
 
@@ -17,7 +18,7 @@ constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 [[noreturn]] void bad_option(const std::string& option, const std::string& value,
                              const std::string& expected) {
-  throw std::invalid_argument(option + " '" + value + "': " + expected);
+  throw InputError(option + " '" + value + "': " + expected);
 }
 
 std::vector<double> numbers_in(const std::string& option, const std::string& text) {

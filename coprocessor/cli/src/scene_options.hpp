@@ -10,7 +10,7 @@
 
 namespace safecell {
 
-// Throws std::invalid_argument: "<option> '<value>': <expected>".
+// Throws InputError: "<option> '<value>': <expected>".
 [[noreturn]] void bad_option(const std::string& option, const std::string& value,
                              const std::string& expected);
 

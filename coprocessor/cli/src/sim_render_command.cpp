@@ -7,6 +7,7 @@
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/robot/kinematics.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/ground_truth.hpp"
@@ -21,8 +22,7 @@ void run_sim_render(const SimRenderOptions& options, std::ostream& out) {
   }
   const bool in_degrees = !options.q_deg.empty();
   if (in_degrees == !options.q_rad.empty()) {
-    throw std::invalid_argument(
-        "give the robot configuration with exactly one of --q (degrees) and --q-rad");
+    throw InputError("give the robot configuration with exactly one of --q (degrees) and --q-rad");
   }
   SimScene scene{joint_values_rad(in_degrees ? "--q" : "--q-rad",
                                   in_degrees ? options.q_deg : options.q_rad, in_degrees, model),

@@ -11,6 +11,7 @@
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/validation/ground_truth_validation.hpp"
 #include "scene_options.hpp"
@@ -175,12 +176,12 @@ int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
   for (std::size_t f = 0; f < options.files.size(); ++f) {
     const std::string& path = options.files[f];
     std::ifstream in(path);
-    if (!in) throw std::invalid_argument(path + ": cannot be read");
+    if (!in) throw InputError(path + ": cannot be read");
     nlohmann::json json;
     try {
       json = nlohmann::json::parse(in);
     } catch (const nlohmann::json::parse_error& error) {
-      throw std::invalid_argument(path + ": not JSON (" + error.what() + ")");
+      throw InputError(path + ": not JSON (" + error.what() + ")");
     }
     ValidationRun run;
     ValidationReport report;
@@ -189,15 +190,15 @@ int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
       merged_run = run;
       merged_run.shards.clear();
     } else if (!same_run(run, merged_run)) {
-      throw std::invalid_argument(path + ": a shard of another run than " + options.files[0] +
-                                  " (seed, scenes, configs, threshold, removal, control, table "
-                                  "settings, model error and shard count must agree)");
+      throw InputError(path + ": a shard of another run than " + options.files[0] +
+                       " (seed, scenes, configs, threshold, removal, control, table "
+                       "settings, model error and shard count must agree)");
     }
     for (const std::size_t shard : run.shards) {
       if (std::find(merged_run.shards.begin(), merged_run.shards.end(), shard) !=
           merged_run.shards.end()) {
-        throw std::invalid_argument(path + ": shard " + std::to_string(shard) +
-                                    " is in an earlier file already");
+        throw InputError(path + ": shard " + std::to_string(shard) +
+                         " is in an earlier file already");
       }
       merged_run.shards.push_back(shard);
     }

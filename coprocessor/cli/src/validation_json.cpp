@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "safecell/errors/input_error.hpp"
+
 namespace safecell {
 namespace {
 
@@ -22,14 +24,14 @@ template <typename T>
 T field(const nlohmann::json& json, const std::string& key, const std::string& source) {
   const auto found = json.find(key);
   if (found == json.end()) {
-    throw std::invalid_argument(source + ": key '" + key + "' missing, expected a report of " +
-                                "`safecell validate --json`");
+    throw InputError(source + ": key '" + key + "' missing, expected a report of " +
+                     "`safecell validate --json`");
   }
   try {
     return found->get<T>();
   } catch (const nlohmann::json::exception&) {
-    throw std::invalid_argument(source + ": key '" + key + "' holds " + found->dump() +
-                                ", expected a value of another type");
+    throw InputError(source + ": key '" + key + "' holds " + found->dump() +
+                     ", expected a value of another type");
   }
 }
 
@@ -129,8 +131,8 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
 void read_validation_json(const nlohmann::json& json, const std::string& source, ValidationRun& run,
                           ValidationReport& report) {
   if (!json.is_object()) {
-    throw std::invalid_argument(source + ": not a JSON object, expected a report of " +
-                                "`safecell validate --json`");
+    throw InputError(source + ": not a JSON object, expected a report of " +
+                     "`safecell validate --json`");
   }
   report = ValidationReport{};
   report.scenes = field<std::size_t>(json, "scenes", source);
@@ -161,8 +163,8 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
       field<std::map<std::string, std::size_t>>(json, "scenes_per_stratum", source);
   const auto strata = field<nlohmann::json>(json, "strata", source);
   if (!strata.is_object()) {
-    throw std::invalid_argument(source + ": key 'strata' holds " + strata.dump() +
-                                ", expected an object of strata");
+    throw InputError(source + ": key 'strata' holds " + strata.dump() +
+                     ", expected an object of strata");
   }
   for (const auto& [name, counts] : strata.items()) {
     std::string where = source;

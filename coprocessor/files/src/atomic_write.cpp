@@ -62,13 +62,12 @@ void write_all(const FileHandle& file, std::string_view text, const std::filesys
   }
 }
 
-// So the rename itself survives a power cut; best effort, as not every file system allows it.
+}  // namespace
+
 void sync_directory(const std::filesystem::path& directory) {
   const FileHandle handle(::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   if (handle.get() >= 0) static_cast<void>(::fsync(handle.get()));
 }
-
-}  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
   int fd = -1;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "safecell/base/fnv1a.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/lut/lut_build_stages.hpp"
 #include "safecell/lut/static_obstacle_cells.hpp"
 
@@ -26,11 +27,11 @@ void check_recording_bounded(const RecordedSilhouettes& recording) {
   for (const std::string& name : recording.unbounded_cameras()) {
     names += (names.empty() ? "" : ", ") + name;
   }
-  throw std::invalid_argument("recorded tables: camera(s) " + names +
-                              " too close to the robot to bound a motion of " +
-                              std::to_string(recording.motion_bound_m()) +
-                              " m between keys in the image; use a smaller key stride or more "
-                              "wrist samples");
+  throw InputError("recorded tables: camera(s) " + names +
+                   " too close to the robot to bound a motion of " +
+                   std::to_string(recording.motion_bound_m()) +
+                   " m between keys in the image; use a smaller key stride or more "
+                   "wrist samples");
 }
 
 LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <ctime>
-#include <fstream>
 #include <future>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -28,15 +27,16 @@ std::string utc_stamp() {
   return text.str();
 }
 
+// Every file of an incident is written durably (flushed to disk, renamed into place): a folder
+// that has been renamed to its final name is whole after a power cut too.
 void write_text(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw FileError(file, "cannot be written");
+  write_file_atomically(file, text);
 }
 
 void write_image(const fs::path& file, const cv::Mat& image) {
-  if (!cv::imwrite(file.string(), image)) throw FileError(file, "cannot be written");
+  std::vector<std::uint8_t> png;
+  if (!cv::imencode(".png", image, png)) throw FileError(file, "cannot be encoded as PNG");
+  write_file_atomically(file, {reinterpret_cast<const char*>(png.data()), png.size()});
 }
 
 void write_bits(const fs::path& file, const CellSet& map) {
@@ -156,7 +156,11 @@ IncidentOutcome write_incident(const IncidentContent& content, const IncidentSet
     }
     fs::remove_all(partial);
     write_into(partial, content, setup);
+    for (const fs::path& folder : {partial / "frames", partial / "reference", partial}) {
+      sync_directory(folder);  // the folders created in them
+    }
     fs::rename(partial, final_folder);  // the folder appears whole or not at all
+    sync_directory(content.folder);
     return {final_folder, ""};
   } catch (const std::exception& error) {
     std::error_code ignored;

@@ -8,11 +8,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/errors/input_error.hpp"
+
 namespace safecell {
 
-class AcquisitionError : public std::runtime_error {
+class AcquisitionError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // Throws "file:line: field: problem" ("file: field: problem" for line 0).

@@ -6,11 +6,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "safecell/errors/input_error.hpp"
+
 namespace safecell {
 
-class CameraError : public std::runtime_error {
+class CameraError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // Builds "source: field: problem".

@@ -6,12 +6,13 @@
 #include <string>
 
 #include "safecell/cell/cell_config.hpp"
+#include "safecell/errors/input_error.hpp"
 
 namespace safecell {
 
-class CellError : public std::runtime_error {
+class CellError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // Builds "source:line: field: problem".

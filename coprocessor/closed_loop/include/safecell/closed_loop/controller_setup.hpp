@@ -11,15 +11,16 @@
 #include <vector>
 
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/robot/robot_model.hpp"
 
 namespace safecell {
 
 // The closed loop cannot be set up on this machine (the controller program missing or not
 // starting): the user's to mend, not a fault of the program.
-class ClosedLoopSetupError : public std::runtime_error {
+class ClosedLoopSetupError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 struct SimulatedJointLimits {

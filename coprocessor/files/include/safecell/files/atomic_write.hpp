@@ -8,13 +8,15 @@
 #include <string_view>
 #include <utility>
 
+#include "safecell/errors/input_error.hpp"
+
 namespace safecell {
 
 // "<path>: <problem>"; problem() alone for callers that name the path their own way.
-class FileError : public std::runtime_error {
+class FileError : public InputError {
  public:
   FileError(const std::filesystem::path& path, std::string problem)
-      : std::runtime_error(path.string() + ": " + problem), problem_(std::move(problem)) {}
+      : InputError(path.string() + ": " + problem), problem_(std::move(problem)) {}
   const std::string& problem() const { return problem_; }
 
  private:
@@ -24,5 +26,9 @@ class FileError : public std::runtime_error {
 // Writes `bytes` to a new temporary file beside `path`, flushes it to disk, and renames it over
 // `path`. Throws FileError ("<path>: <problem>") on failure; the temporary file is then removed.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// Flushes a directory's entries (files and folders created or renamed in it) to disk, so that
+// they survive a power cut; best effort, as not every file system allows it.
+void sync_directory(const std::filesystem::path& directory);
 
 }  // namespace safecell

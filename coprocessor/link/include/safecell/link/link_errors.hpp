@@ -5,11 +5,13 @@
 
 #include <stdexcept>
 
+#include "safecell/errors/input_error.hpp"
+
 namespace safecell {
 
-class LinkSetupError : public std::runtime_error {
+class LinkSetupError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 }  // namespace safecell

@@ -23,16 +23,17 @@
 #include <vector>
 
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/lut/lut_set.hpp"
 
 namespace safecell {
 
 inline constexpr std::uint32_t kLutFileVersion = 4;
 
-class LutFileError : public std::runtime_error {
+class LutFileError : public InputError {
  public:
   LutFileError(const std::filesystem::path& path, const std::string& problem)
-      : std::runtime_error(path.string() + ": " + problem) {}
+      : InputError(path.string() + ": " + problem) {}
 };
 
 // What a file says about itself, read without the tables (for `luts info`).

@@ -19,12 +19,12 @@ namespace safecell {
 [[nodiscard]] std::uint64_t recorded_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
                                                      const RecordingOptions& options);
 
-// Throws std::invalid_argument naming the cameras too close for the recording's bound (its
+// Throws InputError naming the cameras too close for the recording's bound (its
 // unbounded_cameras()); before recording, so that no time is spent on a recording that cannot be
 // used.
 void check_recording_bounded(const RecordedSilhouettes& recording);
 
-// Precondition: recording.recorded(). Throws std::invalid_argument naming the cameras when
+// Precondition: recording.recorded(). Throws InputError naming the cameras when
 // some are too close for the recording's bound. Progress stages as build_model_luts().
 [[nodiscard]] LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
                                          const RecordedSilhouettes& recording, unsigned threads = 0,

@@ -3,11 +3,13 @@
 
 #include <stdexcept>
 
+#include "safecell/errors/input_error.hpp"
+
 namespace safecell {
 
-class RobotError : public std::runtime_error {
+class RobotError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 }  // namespace safecell
