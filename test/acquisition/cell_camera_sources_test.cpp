@@ -13,7 +13,7 @@
 #include "safecell/acquisition/frame_set_acquirer.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/cell_file.hpp"
-#include "scratch_folder.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {

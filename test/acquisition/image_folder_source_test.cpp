@@ -8,7 +8,7 @@
 
 #include "safecell/acquisition/acquisition_error.hpp"
 #include "safecell/acquisition/frame_set_acquirer.hpp"
-#include "scratch_folder.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {

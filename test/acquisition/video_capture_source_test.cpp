@@ -5,7 +5,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "safecell/acquisition/frame_set_acquirer.hpp"
-#include "scratch_folder.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {

@@ -14,7 +14,7 @@
 #include "random_camera.hpp"
 #include "safecell/camera/camera_error.hpp"
 #include "safecell/test/property.hpp"
-#include "temp_directory.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {
@@ -77,7 +77,7 @@ std::string read_error_of(const fs::path& path) {
 }
 
 TEST(CalibrationFile, ReadsEveryKey) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   const PinholeCamera camera =
       read_camera_calibration(write_text(dir.path() / "good.yaml", yaml_of(good_entries())), "c1");
   EXPECT_EQ(camera.name(), "c1");
@@ -97,7 +97,7 @@ TEST(CalibrationFile, ReadsEveryKey) {
 }
 
 TEST(CalibrationFile, AcceptsTheOtherSpellings) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   // A Rodrigues vector for the rotation: a quarter turn about z.
   Entries entries = without(good_entries(), "cell_to_camera_rotation");
   entries.emplace_back("cell_to_camera_rvec", matrix(1, 3, "0., 0., 1.5707963267948966"));
@@ -113,7 +113,7 @@ TEST(CalibrationFile, AcceptsTheOtherSpellings) {
 }
 
 TEST(CalibrationFile, WriteThenReadGivesTheSameCamera) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   const fs::path path = dir.path() / "cam.yaml";
   test::PropertyRun run(100);
   for (int i = 0; i < run.iterations(); ++i) {
@@ -147,7 +147,7 @@ TEST(CalibrationFile, WriteThenReadGivesTheSameCamera) {
 }
 
 TEST(CalibrationFile, OpenCvReadsWhatWeWrite) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   const fs::path path = dir.path() / "cam.yaml";
   CameraIntrinsics intrinsics;
   intrinsics = {500.0, 400.0, 320.0, 240.0, {-0.1, 0.01, 0.001, -0.002, 0.003}, 640, 480};
@@ -169,7 +169,7 @@ TEST(CalibrationFile, OpenCvReadsWhatWeWrite) {
 }
 
 TEST(CalibrationFile, WritingWhereNoFileCanBeIsAnError) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   const PinholeCamera camera =
       PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, Eigen::Vector3d::UnitY(), 1.0, 64, 48);
   const fs::path nowhere = dir.path() / "missing" / "cam.yaml";
@@ -295,7 +295,7 @@ std::vector<BadCase> bad_cases() {
 }
 
 TEST(CalibrationFile, EveryMalformedFileIsNamedWithItsKey) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   int n = 0;
   for (const BadCase& bad : bad_cases()) {
     const fs::path path =
@@ -311,7 +311,7 @@ TEST(CalibrationFile, EveryMalformedFileIsNamedWithItsKey) {
 }
 
 TEST(CalibrationFile, FilesThatCannotBeReadAreNamed) {
-  const TempDirectory dir;
+  const test::ScratchFolder dir;
   const fs::path missing = dir.path() / "missing.yaml";
   EXPECT_EQ(read_error_of(missing),
             missing.string() + ": (file): does not exist, expected an OpenCV YAML calibration");

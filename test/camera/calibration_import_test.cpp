@@ -15,7 +15,7 @@
 
 #include "safecell/camera/calibration_file.hpp"
 #include "safecell/camera/camera_error.hpp"
-#include "temp_directory.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {
@@ -99,7 +99,7 @@ double worst_pixel_error(const PinholeCamera& truth, const PinholeCamera& import
 }
 
 TEST(McCalibImport, EveryCameraProjectsAsTheOriginalOnceItsReferenceIsPlacedInTheCell) {
-  const TempDirectory folder;
+  const test::ScratchFolder folder;
   const std::vector<PinholeCamera> cameras{placed("a", lens(460, -0.12), {1.9, 1.9, 2.9}),
                                            placed("b", lens(430, -0.08), {-1.9, 1.9, 2.8}),
                                            placed("c", lens(470, 0.05), {-1.9, -1.9, 3.0})};
@@ -130,7 +130,7 @@ TEST(McCalibImport, EveryCameraProjectsAsTheOriginalOnceItsReferenceIsPlacedInTh
 
 // The cell pose given is camera 0's: a group whose reference is another camera is named.
 TEST(McCalibImport, AGroupWhoseReferenceIsNotCameraZeroIsNamed) {
-  const TempDirectory folder;
+  const test::ScratchFolder folder;
   const fs::path file = folder.path() / "calibrated_cameras_data.yml";
   const std::vector<PinholeCamera> cameras{placed("a", lens(460, -0.12), {1.9, 1.9, 2.9}),
                                            placed("b", lens(430, -0.08), {-1.9, 1.9, 2.8})};
@@ -148,7 +148,7 @@ TEST(McCalibImport, AGroupWhoseReferenceIsNotCameraZeroIsNamed) {
 }
 
 TEST(McCalibImport, AFisheyeCameraAndAMissingCameraAreNamed) {
-  const TempDirectory folder;
+  const test::ScratchFolder folder;
   const fs::path file = folder.path() / "calibrated_cameras_data.yml";
   write_mc_calib(file, {placed("a", lens(460, -0.12), {1.9, 1.9, 2.9})});
   std::string text;
@@ -203,7 +203,7 @@ projection_matrix:
 )";
 
 TEST(RosCameraInfoImport, TheLensIsReadAsWritten) {
-  const TempDirectory folder;
+  const test::ScratchFolder folder;
   std::ofstream(folder.path() / "cam0.yaml") << kRosCameraInfo;
   const CameraIntrinsics k = read_ros_camera_info(folder.path() / "cam0.yaml");
   EXPECT_EQ(k.width_px, 704);
@@ -218,7 +218,7 @@ TEST(RosCameraInfoImport, TheLensIsReadAsWritten) {
 }
 
 TEST(RosCameraInfoImport, WhatCannotBeUsedIsNamed) {
-  const TempDirectory folder;
+  const test::ScratchFolder folder;
   const fs::path file = folder.path() / "cam0.yaml";
   const auto refused = [&](const std::string& from, const std::string& to) -> std::string {
     std::string text = kRosCameraInfo;

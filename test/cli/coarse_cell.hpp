@@ -9,6 +9,7 @@
 #include <string>
 
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell::test {
 
@@ -26,25 +27,5 @@ inline std::filesystem::path write_coarse_cell(const std::filesystem::path& fold
   std::ofstream(path) << yaml;
   return path;
 }
-
-// A fresh folder under the temporary directory, removed when the object goes.
-class ScratchFolder {
- public:
-  explicit ScratchFolder(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              (name + "-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-               "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchFolder() { std::filesystem::remove_all(path_); }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace safecell::test

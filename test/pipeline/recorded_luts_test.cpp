@@ -9,6 +9,7 @@
 #include <random>
 
 #include "model_fixture.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
 #include "safecell/lut/lut_file.hpp"
 #include "safecell/lut/recorded_luts.hpp"
@@ -137,7 +138,7 @@ TEST_F(RecordedTables, CamerasTooCloseForTheBoundSeeEverythingAndAreRefusedForTa
   try {
     (void)build_recorded_luts(near, grid, recording);
     FAIL() << "tables built with unbounded cameras";
-  } catch (const std::invalid_argument& error) {
+  } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find(near.cameras[0].name()), std::string::npos)
         << error.what();
   }

@@ -6,7 +6,6 @@
 #include "safecell/service/incident_folder.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -14,6 +13,7 @@
 
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/service/incident_recorder.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {
@@ -21,17 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kPeriod_s = 0.05;
-
-struct Folder {
-  Folder() : path(fs::temp_directory_path() / ("safecell-incident-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Folder() { fs::remove_all(path); }
-  Folder(const Folder&) = delete;
-  Folder& operator=(const Folder&) = delete;
-  fs::path path;
-};
 
 IncidentSetup test_setup() {
   IncidentSetup setup;
@@ -88,8 +77,8 @@ fs::path record_incident(const fs::path& folder) {
 }
 
 TEST(IncidentFolder, ReadsBackWhatTheRecorderWrote) {
-  const Folder folder;
-  const fs::path written = record_incident(folder.path);
+  const test::ScratchFolder folder;
+  const fs::path written = record_incident(folder.path());
   const Incident incident = read_incident(written);
   EXPECT_EQ(incident.causes, std::vector<std::string>{"controller stopped"});
   EXPECT_DOUBLE_EQ(incident.trigger_s, 15 * kPeriod_s);
@@ -179,8 +168,8 @@ void edit_json(const fs::path& folder, const std::function<void(nlohmann::json&)
 }
 
 TEST(IncidentFolder, DamageIsNamedByFileAndField) {
-  const Folder folder;
-  const fs::path written = record_incident(folder.path);
+  const test::ScratchFolder folder;
+  const fs::path written = record_incident(folder.path());
   EXPECT_EQ(damaged(written, [](const fs::path&) {}), "no error");  // the control
 
   EXPECT_NE(damaged(written, [](const fs::path& f) { fs::remove(f / "incident.json"); })

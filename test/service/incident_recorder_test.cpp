@@ -6,13 +6,13 @@
 #include "safecell/service/incident_recorder.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "safecell/acquisition/image_folder_source.hpp"
+#include "safecell/test/scratch_folder.hpp"
 
 namespace safecell {
 namespace {
@@ -21,18 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr double kPeriod_s = 0.05;
 constexpr int kCycles = 60;  // 3 s
-
-struct Folder {
-  Folder()
-      : path(fs::temp_directory_path() / ("safecell-incidents-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Folder() { fs::remove_all(path); }
-  Folder(const Folder&) = delete;
-  Folder& operator=(const Folder&) = delete;
-  fs::path path;
-};
 
 // Cycle k: both cameras' images filled with k, the robot at q = 0.01 k, cell k forbidden.
 void feed(IncidentRecorder& recorder, int k) {
@@ -67,8 +55,8 @@ std::string read_all(const fs::path& file) {
 }
 
 TEST(IncidentRecorder, AStopIsWrittenWholeWithTheSecondsAroundIt) {
-  const Folder folder;
-  IncidentRecorder recorder({folder.path, 1.0, 0.5, 10, {}});
+  const test::ScratchFolder folder;
+  IncidentRecorder recorder({folder.path(), 1.0, 0.5, 10, {}});
   std::vector<IncidentOutcome> outcomes;
   for (int k = 0; k < kCycles; ++k) {
     feed(recorder, k);
@@ -88,7 +76,7 @@ TEST(IncidentRecorder, AStopIsWrittenWholeWithTheSecondsAroundIt) {
   EXPECT_EQ(recorder.incidents_written(), 1U);
   // Whole: only the finished folder is there.
   std::size_t entries = 0;
-  for (const auto& entry : fs::directory_iterator(folder.path)) {
+  for (const auto& entry : fs::directory_iterator(folder.path())) {
     ++entries;
     EXPECT_EQ(entry.path(), *written);
   }
@@ -131,21 +119,21 @@ TEST(IncidentRecorder, AStopIsWrittenWholeWithTheSecondsAroundIt) {
 }
 
 TEST(IncidentRecorder, NothingIsWrittenWithoutATrigger) {
-  const Folder folder;
-  IncidentRecorder recorder({folder.path, 1.0, 0.5, 10, {}});
+  const test::ScratchFolder folder;
+  IncidentRecorder recorder({folder.path(), 1.0, 0.5, 10, {}});
   for (int k = 0; k < kCycles; ++k) {
     feed(recorder, k);
     EXPECT_TRUE(recorder.poll(k * kPeriod_s).empty());
   }
   EXPECT_TRUE(recorder.flush().empty());
-  EXPECT_TRUE(fs::is_empty(folder.path));
+  EXPECT_TRUE(fs::is_empty(folder.path()));
 }
 
 // A disk that refuses the folder: the incident is dropped with an error the service logs, no
 // partial folder stays, and the next incident is written once the disk takes it again.
 TEST(IncidentRecorder, AFolderThatCannotBeWrittenDropsTheIncidentOnly) {
-  const Folder folder;
-  const fs::path blocked = folder.path / "incidents";
+  const test::ScratchFolder folder;
+  const fs::path blocked = folder.path() / "incidents";
   std::ofstream(blocked) << "a file where the folder should be";
   IncidentRecorder recorder({blocked, 1.0, 0.2, 10, {}});
   for (int k = 0; k < 20; ++k) feed(recorder, k);

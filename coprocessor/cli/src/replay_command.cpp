@@ -2,7 +2,6 @@
 
 #include <bit>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -20,6 +19,7 @@
 #include "safecell/closed_loop/timeline_plot.hpp"
 #include "safecell/errors/input_error.hpp"
 #include "safecell/files/atomic_write.hpp"
+#include "safecell/files/read_file.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
 #include "safecell/service/incident_folder.hpp"
@@ -30,15 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string file_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw FileError(file, "cannot be read (--cell: the cell file the incident was run with)");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::string hex(std::uint64_t value) {
   std::ostringstream text;
   text << std::hex << value;
@@ -48,7 +39,8 @@ std::string hex(std::uint64_t value) {
 // The replay must run on what the service ran with, or its maps mean nothing.
 void check_setup(const Incident& incident, const fs::path& cell_path, const CellModel& cell,
                  const CspaceGrid& grid) {
-  if (file_text(cell_path) != incident.setup.cell_text) {
+  if (read_file(cell_path, " (--cell: the cell file the incident was run with)") !=
+      incident.setup.cell_text) {
     throw InputError(cell_path.string() +
                      " is not the cell file the incident was recorded with (its text "
                      "is in the incident's cell.yaml); give that one as --cell");

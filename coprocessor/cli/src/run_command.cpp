@@ -4,12 +4,10 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 
 #include "camera_reference.hpp"
 #include "lut_loading.hpp"
@@ -19,6 +17,7 @@
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/files/atomic_write.hpp"
+#include "safecell/files/read_file.hpp"
 #include "safecell/link/link_errors.hpp"
 #include "safecell/link/udp_transport.hpp"
 #include "safecell/lut/configuration_silhouettes.hpp"
@@ -132,15 +131,6 @@ bool open_session(CoprocessorLink& link, const RunOptions& options, std::ostream
       said_waiting = true;
     }
   }
-}
-
-// The cell file's text, kept with every incident (replay checks it runs on the same file).
-std::string read_cell_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in) throw FileError(path, "cannot be read again");
-  return text.str();
 }
 
 // The controller's stop request when the service ends by an error after the session opened: the
@@ -278,7 +268,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   std::optional<IncidentRecorder> incidents;
   if (options.incident_seconds > 0.0) {
     IncidentSetup setup{fs::absolute(options.cell_path),
-                        read_cell_text(options.cell_path),
+                        read_file(options.cell_path, " again"),
                         grid.fingerprint(),
                         luts.set.fingerprint,
                         fusion.sync_error_s,

@@ -1,26 +1,18 @@
 #include "safecell/service/incident_folder.hpp"
 
 #include <charconv>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
 #include "safecell/files/atomic_write.hpp"
+#include "safecell/files/read_file.hpp"
 
 namespace safecell {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw FileError(file, "cannot be read (is this an incident folder?)");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The JSON reader's checks: each names the file and the field.
 class IncidentJson {
@@ -151,7 +143,7 @@ std::vector<double> numbers_in(const std::string& field, const fs::path& file, s
 }
 
 std::vector<IncidentJointState> read_joints(const fs::path& file) {
-  std::istringstream lines(read_text(file));
+  std::istringstream lines(read_file(file));
   std::string line;
   std::getline(lines, line);
   if (line.rfind("time_s,state,speed_scale,q_rad", 0) != 0) {
@@ -199,7 +191,7 @@ Incident read_incident(const fs::path& folder) {
   const IncidentJson json(file);
   Json root;
   try {
-    root = Json::parse(read_text(file));
+    root = Json::parse(read_file(file, " (is this an incident folder?)"));
   } catch (const Json::parse_error& error) {
     throw FileError(file, std::string("is not JSON: ") + error.what());
   }
@@ -222,7 +214,7 @@ Incident read_incident(const fs::path& folder) {
     incident.cycles.push_back(
         read_cycle(json, cycles[i], "cycles[" + std::to_string(i) + "].", incident.cameras.size()));
   }
-  incident.setup.cell_text = read_text(folder / "cell.yaml");
+  incident.setup.cell_text = read_file(folder / "cell.yaml");
   incident.joints = read_joints(folder / "joints.csv");
   return incident;
 }
@@ -254,7 +246,7 @@ FrameSet incident_frame_set(const fs::path& folder, const Incident& incident,
 CellSet read_incident_map(const fs::path& folder, const IncidentCycle& cycle,
                           std::uint32_t cell_count) {
   const fs::path file = incident_map_file(folder, cycle.index);
-  const std::string bytes = read_text(file);
+  const std::string bytes = read_file(file);
   CellSet map(cell_count);
   std::vector<std::uint64_t>& words = map.words();
   if (bytes.size() != words.size() * 8) {
