@@ -36,15 +36,21 @@ std::string hex(std::uint64_t value) {
   return text.str();
 }
 
-// The replay must run on what the service ran with, or its maps mean nothing.
-void check_setup(const Incident& incident, const fs::path& cell_path, const CellModel& cell,
-                 const CspaceGrid& grid) {
-  if (read_file(cell_path, " (--cell: the cell file the incident was run with)") !=
-      incident.setup.cell_text) {
+// The replay must run on what the service ran with, or its maps mean nothing: first the cell
+// file's text (before it is loaded, so a file that moved is named as such).
+void check_cell_text(const Incident& incident, const fs::path& cell_path) {
+  if (read_file(cell_path,
+                ": the cell file the incident was recorded with; give it as --cell "
+                "if it has moved") != incident.setup.cell_text) {
     throw InputError(cell_path.string() +
                      " is not the cell file the incident was recorded with (its text "
                      "is in the incident's cell.yaml); give that one as --cell");
   }
+}
+
+// Then what the cell makes of it: the cameras, the grid.
+void check_setup(const Incident& incident, const fs::path& cell_path, const CellModel& cell,
+                 const CspaceGrid& grid) {
   std::vector<std::string> names;
   for (const PinholeCamera& camera : cell.cameras) names.push_back(camera.name());
   if (names != incident.cameras) {
@@ -101,6 +107,7 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
   const Incident incident = read_incident(folder);
   const fs::path cell_path =
       options.cell_path.empty() ? incident.setup.cell_file : fs::path(options.cell_path);
+  check_cell_text(incident, cell_path);
   const CellModel cell = load_cell_model(load_cell_file(cell_path));
   const CspaceGrid grid = make_grid(cell.config);
   check_setup(incident, cell_path, cell, grid);
