@@ -133,6 +133,24 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
   }
   EXPECT_NE(page.find("timeline.png"), std::string::npos);
   EXPECT_NE(run.out.find("contacts while moving 0"), std::string::npos) << run.out;
+
+  // The demo records incidents as safecell run does (the stop at the end at least), and each
+  // replays offline to the maps the service sent, bit for bit.
+  ASSERT_TRUE(fs::exists(out / "incidents")) << run.err;
+  std::size_t incidents = 0;
+  std::size_t ran_again = 0;  // cycles the pipeline ran on again (not sent all forbidden)
+  for (const auto& entry : fs::directory_iterator(out / "incidents")) {
+    SCOPED_TRACE(entry.path().string());
+    ++incidents;
+    const auto replay = test::safecell_cli(
+        {"replay", entry.path().string(), "--lut-cache", (scratch.path() / "cache").string()});
+    EXPECT_EQ(replay.exit_code, 0) << replay.out << replay.err;
+    EXPECT_NE(replay.out.find("every map as sent"), std::string::npos) << replay.out;
+    const auto replayed = nlohmann::json::parse(read_text(entry.path() / "replay" / "replay.json"));
+    for (const auto& cycle : replayed["per_cycle"]) ran_again += cycle["outcome"] == "identical";
+  }
+  EXPECT_GE(incidents, 1U) << run.err;
+  EXPECT_GT(ran_again, 0U) << "no recorded cycle went through the pipeline again";
 }
 
 TEST(DemoCommand, AbsurdSettingsAreRefused) {

@@ -78,6 +78,11 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
                    "seconds (0: never)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 3600.0));
+  demo_command
+      ->add_option("--incident-seconds", demo.incident_seconds,
+                   "Seconds before each stop or fault written into <out>/incidents for safecell "
+                   "replay (0: none)")
+      ->capture_default_str();
   demo_command->add_option("--controller-program", demo.controller_program,
                            "The safecell-controller program; default $SAFECELL_CONTROLLER, the one "
                            "beside safecell, or the one this build made");

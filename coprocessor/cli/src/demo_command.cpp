@@ -5,13 +5,17 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <random>
 
 #include "demo_report.hpp"
+#include "incident_feed.hpp"
+#include "safecell/cell/default_cell.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/cli/validate_command.hpp"
 #include "safecell/closed_loop/controller_session.hpp"
 #include "safecell/closed_loop/live_simulated_cameras.hpp"
+#include "safecell/files/read_file.hpp"
 #include "safecell/validation/configuration_strata.hpp"
 #include "scene_options.hpp"
 #include "service_status.hpp"
@@ -48,6 +52,11 @@ void check_options(const DemoOptions& options) {
   if (!(options.views_every_s >= 0.0)) {
     bad_option("--views-every", std::to_string(options.views_every_s), "seconds >= 0");
   }
+  if (!(options.incident_seconds == 0.0 ||
+        (options.incident_seconds >= 0.1 && options.incident_seconds <= 60.0))) {
+    bad_option("--incident-seconds", std::to_string(options.incident_seconds),
+               "0 (no incidents) or 0.1..60 s");
+  }
 }
 
 }  // namespace
@@ -77,10 +86,25 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   run.fps = options.fps;
   ClosedLoopRecord& record = run.record;
   AppliedMapLatency latency;  // for the status line
+  // Incidents as safecell run records them, for `safecell replay` (the built-in cell: no file).
+  std::optional<IncidentFeed> incidents;
+  if (options.incident_seconds > 0.0) {
+    IncidentSetup setup{options.cell_path.empty() ? fs::path() : fs::absolute(options.cell_path),
+                        options.cell_path.empty() ? std::string(default_cell_yaml())
+                                                  : read_file(options.cell_path, " again"),
+                        sensing.grid.fingerprint(),
+                        sensing.luts.set.fingerprint,
+                        sensing.fusion.sync_error_s,
+                        sensing.reference.frames};
+    incidents.emplace(
+        IncidentSettings{out_dir / "incidents", options.incident_seconds, 1.0, 50, setup}, err);
+  }
   session.link().on_joint_state([&](const ReceivedJointState& received) {
     if (received.coprocessor_time_ns == 0) return;
     JointRecord sample = joint_record(received, session.link().clock_sync(), start_ns);
-    latency.joint_state(sample, record.joints.empty() ? nullptr : &record.joints.back());
+    const JointRecord* previous = record.joints.empty() ? nullptr : &record.joints.back();
+    latency.joint_state(sample, previous);
+    if (incidents) incidents->joint_state(sample, previous);
     record.joints.push_back(std::move(sample));
   });
 
@@ -145,9 +169,11 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
       continue;
     }
     ++k;
-    const ServiceCycle& cycle = service.process(cameras.acquire());
+    const FrameSet frames = cameras.acquire();
+    const ServiceCycle& cycle = service.process(frames);
     const std::size_t index = cycle_count++;
     const double time_s = seconds_since_start(cycle.exposure_ns);
+    if (incidents) incidents->cycle(time_s, frames, cycle, service.last_map());
     CycleRecord cycle_record;
     cycle_record.exposure_s = time_s;
     cycle_record.sent_s = seconds_since_start(cycle.sent_ns);
@@ -204,6 +230,10 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   // What follows the request is not part of the run.
   const double run_end_s = seconds_since_start(steady_now_ns());
   run.controller_exit = session.finish("safecell demo finished");
+  if (incidents) {
+    err << incidents->finish() << " incident(s) in " << (out_dir / "incidents").string()
+        << " (safecell replay FOLDER runs one again)\n";
+  }
   if (run.controller_died) {
     err << "the controller exited during the demo (code "
         << (run.controller_exit ? std::to_string(*run.controller_exit) : "?")

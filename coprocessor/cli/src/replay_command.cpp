@@ -14,6 +14,7 @@
 #include "png_output.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
+#include "safecell/cell/default_cell.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/closed_loop/report_page.hpp"
 #include "safecell/closed_loop/timeline_plot.hpp"
@@ -38,10 +39,14 @@ std::string hex(std::uint64_t value) {
 
 // The replay must run on what the service ran with, or its maps mean nothing: first the cell
 // file's text (before it is loaded, so a file that moved is named as such).
+// An empty path: the built-in default cell (the demo's without --cell).
 void check_cell_text(const Incident& incident, const fs::path& cell_path) {
-  if (read_file(cell_path,
-                ": the cell file the incident was recorded with; give it as --cell "
-                "if it has moved") != incident.setup.cell_text) {
+  const std::string text = cell_path.empty()
+                               ? std::string(default_cell_yaml())
+                               : read_file(cell_path,
+                                           ": the cell file the incident was recorded with; "
+                                           "give it as --cell if it has moved");
+  if (text != incident.setup.cell_text) {
     throw InputError(cell_path.string() +
                      " is not the cell file the incident was recorded with (its text "
                      "is in the incident's cell.yaml); give that one as --cell");
@@ -108,7 +113,7 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
   const fs::path cell_path =
       options.cell_path.empty() ? incident.setup.cell_file : fs::path(options.cell_path);
   check_cell_text(incident, cell_path);
-  const CellModel cell = load_cell_model(load_cell_file(cell_path));
+  const CellModel cell = load_cell_model(load_cell_file_or_default(cell_path.string()));
   const CspaceGrid grid = make_grid(cell.config);
   check_setup(incident, cell_path, cell, grid);
   const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);

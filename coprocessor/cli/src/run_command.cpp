@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "camera_reference.hpp"
+#include "incident_feed.hpp"
 #include "lut_loading.hpp"
 #include "safecell/acquisition/cell_camera_sources.hpp"
 #include "safecell/acquisition/exposure_sync.hpp"
@@ -23,7 +24,6 @@
 #include "safecell/lut/configuration_silhouettes.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
-#include "safecell/service/incident_recorder.hpp"
 #include "safecell/service/sensing_service.hpp"
 #include "safecell/validation/percentile.hpp"
 #include "scene_options.hpp"
@@ -265,7 +265,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     return (static_cast<double>(ns) - static_cast<double>(start_ns)) * 1e-9;
   };
   // Incidents: the seconds around every stop and fault, for `safecell replay`.
-  std::optional<IncidentRecorder> incidents;
+  std::optional<IncidentFeed> incidents;
   if (options.incident_seconds > 0.0) {
     IncidentSetup setup{fs::absolute(options.cell_path),
                         read_file(options.cell_path, " again"),
@@ -274,7 +274,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
                         fusion.sync_error_s,
                         reference};
     incidents.emplace(
-        IncidentSettings{out_dir / "incidents", options.incident_seconds, 1.0, 50, setup});
+        IncidentSettings{out_dir / "incidents", options.incident_seconds, 1.0, 50, setup}, err);
   }
   std::optional<JointRecord> last_joints;
   AppliedMapLatency latency;
@@ -282,34 +282,15 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     if (received.coprocessor_time_ns == 0) return;
     JointRecord sample = joint_record(received, link.clock_sync(), start_ns);
     latency.joint_state(sample, last_joints ? &*last_joints : nullptr);
-    if (incidents) {
-      incidents->add_joint_state(
-          {sample.time_s, state_name(sample.state), sample.speed_scale, sample.q, sample.velocity});
-      const bool halted = sample.state == v1::CONTROLLER_STATE_STOPPED ||
-                          sample.state == v1::CONTROLLER_STATE_FAULT;
-      if (halted && (!last_joints || last_joints->state != sample.state)) {
-        incidents->trigger(sample.time_s, std::string("controller ") + state_name(sample.state));
-      }
-    }
+    if (incidents) incidents->joint_state(sample, last_joints ? &*last_joints : nullptr);
     last_joints = std::move(sample);
   });
-  // What the incident writer did (it runs beside the loop); a failure is logged, not fatal.
-  const auto report_incidents = [&](const std::vector<IncidentOutcome>& outcomes) {
-    for (const IncidentOutcome& outcome : outcomes) {
-      if (outcome.error.empty()) {
-        err << "incident written: " << outcome.folder.string() << '\n';
-      } else {
-        err << "incident " << outcome.error << '\n';
-      }
-    }
-  };
 
   const auto frame_period =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.fps));
   StatusPrinter status(err);
   RunFigures figures;
   std::size_t faults_reported = 0;
-  bool was_all_forbidden = false;
   std::string stopped_because;
   while (true) {
     if (const auto signal = StopSignals::received()) {
@@ -351,20 +332,14 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     const double time_s =
         seconds_since_start(cycle.exposure_ns != 0 ? cycle.exposure_ns : steady_now_ns());
     latency.sent(cycle.map_version, time_s);
-    const bool newly_all_forbidden = !cycle.all_forbidden.empty() && !was_all_forbidden;
-    was_all_forbidden = !cycle.all_forbidden.empty();
-    if (incidents) {
-      incidents->add_cycle(time_s, set, cycle, service.last_map());
-      if (newly_all_forbidden) incidents->trigger(time_s, "all forbidden: " + cycle.all_forbidden);
-    }
+    if (incidents) incidents->cycle(time_s, set, cycle, service.last_map());
     for (; faults_reported < link.controller_faults().size(); ++faults_reported) {
       const v1::FaultReport& fault = link.controller_faults()[faults_reported];
       const std::string text =
           std::string(v1::FaultCause_Name(fault.cause())) + ": " + fault.detail();
       err << "controller fault: " << text << '\n';
-      if (incidents) incidents->trigger(time_s, "controller fault " + text);
+      if (incidents) incidents->fault(time_s, text);
     }
-    if (incidents) report_incidents(incidents->poll(time_s));
     status.cycle(time_s, [&] {
       return service_status_line(figures.cycles - 1, time_s, cycle, grid.cell_count(),
                                  last_joints ? &*last_joints : nullptr, latency.last_ms());
@@ -377,10 +352,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   stop_request.send("safecell run stopped: " + stopped_because);
   service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
-  if (incidents) {
-    report_incidents(incidents->flush());
-    figures.incidents = incidents->incidents_written();
-  }
+  if (incidents) figures.incidents = incidents->finish();
   write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, link);
   out << "stopped: " << stopped_because << "; the controller was asked to stop the robot\n"
       << "cycles " << figures.cycles << " in " << fixed(seconds, 1) << " s, all-forbidden "

@@ -28,6 +28,9 @@ struct DemoOptions {
   std::string controller_program;     // empty: found (find_controller_program)
   // The demo's operator acknowledges a latched fault after it held this long (0: never).
   double acknowledge_after_s = 2.0;
+  // The incident recorder keeps this many seconds before each stop or fault and writes them into
+  // <out>/incidents for `safecell replay` (0: off).
+  double incident_seconds = 2.0;
 };
 
 // Returns the exit code: 0, or kExitValidationFailed (validate_command.hpp) when the robot touched
