@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -66,6 +67,7 @@ int main(int argc, char** argv) {
   bool quiet = false;
   int realtime_priority = 20;
   bool lockstep = false;
+  std::string trace_path;
   app.add_option("--config", config_path, "the controller's YAML file (controller.example.yaml)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -77,6 +79,9 @@ int main(int argc, char** argv) {
   app.add_option("--realtime-priority", realtime_priority,
                  "SCHED_FIFO priority of the cycle, where allowed (0: ordinary scheduling)")
       ->check(CLI::Range(0, 99));
+  app.add_option("--trace", trace_path,
+                 "write every cycle and link event as JSON lines to this file (fault campaigns, "
+                 "post-mortems; about 150 bytes per cycle)");
   app.add_flag("--lockstep", lockstep,
                "simulated time, stepped over stdin/stdout by safecell validate --closed-loop");
   try {
@@ -105,7 +110,17 @@ int main(int argc, char** argv) {
           << module.listen_port() << ", cycle " << config.timing.period_ms << " ms\n";
       return safecell::run_lockstep(module, config.timing.period_ms, 0, std::cout, log);
     }
+    std::ofstream trace;  // before the module, which writes to it until its end
     safecell::ControllerModule module(config);
+    if (!trace_path.empty()) {
+      trace.open(trace_path, std::ios::trunc);
+      if (!trace) {
+        std::cerr << "safecell-controller: --trace " << trace_path << ": cannot write ("
+                  << std::strerror(errno) << ")\n";
+        return 2;
+      }
+      module.trace_to(trace);
+    }
     running = &module;
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);

@@ -18,20 +18,6 @@
 namespace safecell {
 namespace {
 
-// The cause of a stop request as its log line names it.
-const char* fault_cause_name(safecell_v1_FaultCause cause) {
-  switch (cause) {
-    case safecell_v1_FaultCause_FAULT_CAUSE_OPERATOR:
-      return "operator";
-    case safecell_v1_FaultCause_FAULT_CAUSE_CAMERAS:
-      return "cameras";
-    case safecell_v1_FaultCause_FAULT_CAUSE_WATCHDOG:
-      return "watchdog";
-    default:
-      return "other";
-  }
-}
-
 std::uint64_t monotonic_ns() {
   timespec now{};
   clock_gettime(CLOCK_MONOTONIC, &now);
@@ -180,6 +166,10 @@ std::uint64_t ControllerModule::datagrams_sent() const noexcept {
   return parts_->port.datagrams_sent();
 }
 
+void ControllerModule::trace_to(std::ostream& out) {
+  trace_ = std::make_unique<CycleTrace>(out, parts_->grid.cell_count());
+}
+
 void ControllerModule::service_link(std::uint64_t until_ns) {
   (void)parts_->cycle.service_link(until_ns);
 }
@@ -219,11 +209,15 @@ bool ControllerModule::cycle(std::uint64_t now) {
   p.last_start_ns = now;
   if (now > p.robot.time_ns()) p.robot.step(static_cast<double>(now - p.robot.time_ns()) * 1e-9);
   robot_joints_ = p.robot.read();
-  if (acknowledge_requested_.exchange(false)) p.cycle.acknowledge();
+  if (acknowledge_requested_.exchange(false)) {
+    p.cycle.acknowledge();
+    if (trace_) trace_->acknowledged(now);
+  }
   // The safety cycle first, on the deadline, with the velocities planned after the last one:
   // the planner's time (a re-plan can take milliseconds) then never shifts the cycle's start,
   // which the watchdog's window judges.
   const CycleReport& report = p.cycle.run(p.planned, true);
+  if (trace_) trace_->record(now, report, p.link, p.store.store());
   const double work_ms = static_cast<double>(p.clock.now_ns() - report.start_ns) * 1e-6;
   if (work_ms > status_.worst_cycle_ms) status_.worst_cycle_ms = work_ms;
   const RobotJoints joints = p.robot.read();
@@ -299,6 +293,7 @@ TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
     }
     if (status && (done || now >= next_status)) {
       status(status_);
+      if (trace_) trace_->flush();
       next_status = now + static_cast<std::uint64_t>(status_period_s * 1e9);
     }
     if (done) break;
@@ -308,6 +303,7 @@ TaskOutcome ControllerModule::run(double max_duration_s, double status_period_s,
   // Leave the robot held (a controlled stop, power kept); the coprocessor sees the joint stream
   // end and its own watchdog report it.
   p.robot.stop(StopCategory::kCategory2);
+  if (trace_) trace_->flush();
   return outcome_;
 }
 

@@ -47,6 +47,19 @@ const char* to_string(LinkBlock block) noexcept {
   return "unknown";
 }
 
+const char* fault_cause_name(safecell_v1_FaultCause cause) noexcept {
+  switch (cause) {
+    case safecell_v1_FaultCause_FAULT_CAUSE_OPERATOR:
+      return "operator";
+    case safecell_v1_FaultCause_FAULT_CAUSE_CAMERAS:
+      return "cameras";
+    case safecell_v1_FaultCause_FAULT_CAUSE_WATCHDOG:
+      return "watchdog";
+    default:
+      return "other";
+  }
+}
+
 ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
                                MapStore& store) noexcept
     : config_(config),

@@ -41,4 +41,18 @@ void CameraViews::log_change(const CameraFrame& frame, std::size_t index) {
   last = frame.view.fault;
 }
 
+CameraViews camera_views_for(const CellModel& cell, const std::vector<cv::Mat>& references,
+                             CameraViews::Log log, const HealthSettings& settings) {
+  if (references.size() != cell.cameras.size()) {
+    throw std::invalid_argument("camera views: " + std::to_string(cell.cameras.size()) +
+                                " cameras but " + std::to_string(references.size()) +
+                                " reference images");
+  }
+  std::vector<CameraHealthMonitor> monitors;
+  for (std::size_t c = 0; c < references.size(); ++c) {
+    monitors.emplace_back(cell.cameras[c].name(), references[c], settings);
+  }
+  return CameraViews(std::move(monitors), std::move(log));
+}
+
 }  // namespace safecell

@@ -5,6 +5,7 @@
 
 #include "safecell/cli/bench_command.hpp"
 #include "safecell/cli/camera_import_command.hpp"
+#include "safecell/cli/campaign_command.hpp"
 #include "safecell/cli/cell_coverage_command.hpp"
 #include "safecell/cli/cell_info_command.hpp"
 #include "safecell/cli/closed_loop_validate_command.hpp"
@@ -535,6 +536,50 @@ int run_safecell(int argc, const char* const* argv, std::ostream& out, std::ostr
   replay_command->add_option("--out", replay.out_dir,
                              "Folder for the report (default: <incident>/replay)");
   replay_command->callback([&] { action = [&] { exit_code = run_replay(replay, out, err); }; });
+
+  CampaignOptions campaign;
+  CLI::App* campaign_command = app.add_subcommand(
+      "campaign",
+      "Fault campaign on loopback with real processes: each fault class of SAFETY.md (link "
+      "corruption, repetition, reorder, loss, insertion, foreign session, delay, cut; wrong "
+      "fingerprint, coprocessor killed, controller restarted; cameras frozen, blinded, moved, "
+      "unplugged) injected into a working closed loop with safecell-controller; checks that the "
+      "robot is held in time, that no map the coprocessor did not send is accepted, that the "
+      "robot never moves on stale data, that the cause is named and that the loop recovers "
+      "after acknowledgement. Prints a table, writes <out>/campaign.json; exit 1 on a failure");
+  campaign_command->add_option("--faults", campaign.faults,
+                               "Comma-separated fault classes (default: all)");
+  campaign_command->add_option("--out", campaign.out_dir, "Folder for the trials and campaign.json")
+      ->capture_default_str();
+  campaign_command->add_option("--cell", campaign.cell_path,
+                               "The cell file (default: the built-in default cell)");
+  campaign_command->add_option("--lut-cache", campaign.lut_cache,
+                               "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                               "~/.cache/safecell");
+  campaign_command
+      ->add_option("--settle", campaign.settle_s, "Seconds the robot works before each fault")
+      ->capture_default_str();
+  campaign_command->add_option("--fault-seconds", campaign.fault_s, "Seconds each fault lasts")
+      ->capture_default_str();
+  campaign_command
+      ->add_option("--recover", campaign.recover_s,
+                   "Seconds after each fault for acknowledgement and recovery")
+      ->capture_default_str();
+  campaign_command
+      ->add_option("--rate", campaign.rate,
+                   "Probability per datagram of the faults injected at a rate")
+      ->capture_default_str();
+  campaign_command->add_option("--seed", campaign.seed, "Seed of the proxy and the sensor noise")
+      ->capture_default_str();
+  campaign_command->add_flag("--json", campaign.json, "Print campaign.json instead of the table");
+  campaign_command->add_option("--controller-program", campaign.controller_program,
+                               "The safecell-controller program (default: beside safecell)");
+  campaign_command->add_option(
+      "--test-only-controller-limits-ms", campaign.test_only_controller_limits_ms,
+      "The negative control: the controller's watchdog and data age limit in ms instead of "
+      "250 (the checks keep 250): the campaign must then fail");
+  campaign_command->callback(
+      [&] { action = [&] { exit_code = run_campaign(campaign, out, err); }; });
 
   BenchOptions bench;
   CLI::App* bench_command = app.add_subcommand(

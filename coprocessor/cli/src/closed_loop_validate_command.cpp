@@ -219,7 +219,8 @@ int run_closed_loop_validate(const ClosedLoopValidateOptions& options, std::ostr
                       sensing.luts.set.fingerprint,
                       sensing.fusion.sync_error_s,
                       program,
-                      out_dir};
+                      out_dir,
+                      sensing.reference.frames};
   LockstepSettings settings;
   settings.fps = options.fps;
   settings.latency_ms = options.latency_ms;

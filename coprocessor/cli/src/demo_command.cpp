@@ -74,7 +74,9 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   ControllerSession session(
       sensing.cell, sensing.grid, sensing.pipeline, sensing.luts.set.fingerprint,
       demo_controller_setup(sensing.cell, sensing.grid, world),
-      real_time_session(program, out_dir, options.fps, sensing.fusion.sync_error_s), err);
+      real_time_session(program, out_dir, options.fps, sensing.fusion.sync_error_s,
+                        sensing.reference.frames),
+      err);
   SensingService& service = session.service();
 
   const std::uint64_t start_ns = steady_now_ns();
@@ -173,7 +175,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
     const ServiceCycle& cycle = service.process(frames);
     const std::size_t index = cycle_count++;
     const double time_s = seconds_since_start(cycle.exposure_ns);
-    if (incidents) incidents->cycle(time_s, frames, cycle, service.last_map());
+    if (incidents) incidents->cycle(time_s, service.last_frames(), cycle, service.last_map());
     CycleRecord cycle_record;
     cycle_record.exposure_s = time_s;
     cycle_record.sent_s = seconds_since_start(cycle.sent_ns);

@@ -54,7 +54,9 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
   setup.min_healthy_cameras = static_cast<std::uint32_t>(sensing.cell.camera_threshold);
   ControllerSession session(
       sensing.cell, sensing.grid, sensing.pipeline, sensing.luts.set.fingerprint, setup,
-      real_time_session(program, folder.path, kFps, sensing.fusion.sync_error_s), log);
+      real_time_session(program, folder.path, kFps, sensing.fusion.sync_error_s,
+                        sensing.reference.frames),
+      log);
   const std::uint64_t start_ns = steady_now_ns();
   ClosedLoopRecord record;
   session.link().on_joint_state([&](const ReceivedJointState& received) {

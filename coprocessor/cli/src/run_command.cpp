@@ -258,7 +258,9 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   service_settings.widening_budget_m =
       removal_widening_m(*cell.robot, grid, 0.0, fusion.sync_error_s).value_or(0.02);
   service_settings.camera_threshold = static_cast<std::uint32_t>(cell.camera_threshold);
-  SensingService service(grid, pipeline, link, service_settings);
+  SensingService service(
+      grid, pipeline, link, service_settings,
+      camera_views_for(cell, reference, [&err](std::string_view line) { err << line << "\n"; }));
 
   const std::uint64_t start_ns = steady_now_ns();
   const auto seconds_since_start = [start_ns](std::uint64_t ns) {
@@ -332,7 +334,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     const double time_s =
         seconds_since_start(cycle.exposure_ns != 0 ? cycle.exposure_ns : steady_now_ns());
     latency.sent(cycle.map_version, time_s);
-    if (incidents) incidents->cycle(time_s, set, cycle, service.last_map());
+    if (incidents) incidents->cycle(time_s, service.last_frames(), cycle, service.last_map());
     for (; faults_reported < link.controller_faults().size(); ++faults_reported) {
       const v1::FaultReport& fault = link.controller_faults()[faults_reported];
       const std::string text =

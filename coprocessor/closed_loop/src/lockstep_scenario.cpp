@@ -62,6 +62,7 @@ ScenarioResult run_lockstep_scenario(LockstepParts& parts, const LockstepSetting
   const std::filesystem::path log_file = parts.folder / "controller.log";
   ControllerSessionSettings session_settings;
   session_settings.program = parts.program;
+  session_settings.camera_references = parts.camera_references;
   session_settings.folder = parts.folder;
   session_settings.fps = settings.fps;
   session_settings.sync_error_s = parts.sync_error_s;

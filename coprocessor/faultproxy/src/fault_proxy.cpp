@@ -10,6 +10,7 @@
 #include <boost/asio/steady_timer.hpp>
 // clang-format on
 #include <array>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -45,9 +46,17 @@ struct Direction {
 };
 
 nlohmann::json json_of(const FaultCounts& c) {
-  return {{"received", c.received},     {"forwarded", c.forwarded}, {"dropped", c.dropped},
-          {"duplicated", c.duplicated}, {"reordered", c.reordered}, {"delayed", c.delayed},
-          {"flipped", c.flipped},       {"inserted", c.inserted},   {"cut", c.cut}};
+  return {{"received", c.received},
+          {"forwarded", c.forwarded},
+          {"dropped", c.dropped},
+          {"duplicated", c.duplicated},
+          {"reordered", c.reordered},
+          {"delayed", c.delayed},
+          {"flipped", c.flipped},
+          {"inserted", c.inserted},
+          {"foreign_session", c.foreign_session},
+          {"resealed_flipped", c.resealed_flipped},
+          {"cut", c.cut}};
 }
 
 udp::socket bound_socket(asio::io_context& io, const std::string& ip, std::uint16_t port) {
@@ -120,6 +129,47 @@ struct FaultProxy::State {
     return frame;
   }
 
+  // `datagram` again under another session, sealed as its sender would; empty when it does not
+  // open with the session's fingerprint (a handshake, or the fingerprint not given).
+  Datagram in_foreign_session(const Datagram& datagram) {
+    return resealed(datagram, [this](FrameHeader& header, Datagram&) {
+      header.session_id ^= 0x5A5A5A5A00000000ull | (rng() & 0xFFFFFFFFull) | 1U;
+    });
+  }
+
+  // `datagram` with 1..max_flipped_bits bits of its payload flipped, sealed again (empty: as
+  // above).
+  Datagram with_payload_flipped(const Datagram& datagram, int max_flipped_bits) {
+    return resealed(datagram, [this, max_flipped_bits](FrameHeader&, Datagram& payload) {
+      if (payload.empty()) return;
+      const auto bits = 1 + rng() % static_cast<std::uint64_t>(std::max(1, max_flipped_bits));
+      for (std::uint64_t b = 0; b < bits; ++b) {
+        const std::size_t bit = rng() % (payload.size() * 8);
+        payload[bit / 8] ^= static_cast<std::uint8_t>(1U << (bit % 8));
+      }
+    });
+  }
+
+  // A data frame of the session opened, its header and payload changed by `change`, and sealed
+  // with a valid CRC; empty when it does not open with the session's fingerprint (a handshake,
+  // or the fingerprint not given).
+  template <typename Change>
+  Datagram resealed(const Datagram& datagram, Change change) {
+    const std::uint64_t fingerprint = settings.configuration_fingerprint;
+    if (fingerprint == 0) return {};
+    const auto view = open_frame(datagram.data(), datagram.size(), fingerprint);
+    if (!view.ok() || view.value().is_handshake()) return {};
+    FrameHeader header = view.value().header;
+    Datagram payload(view.value().payload, view.value().payload + view.value().payload_size);
+    change(header, payload);
+    Datagram frame(kMaxFrameBytes);
+    const auto size = write_frame(header, fingerprint, payload.data(), payload.size(), frame.data(),
+                                  frame.size());
+    if (!size.ok()) return {};
+    frame.resize(size.value());
+    return frame;
+  }
+
   void forward(Direction& d, Datagram datagram) {
     const FaultRates& r = d.rates;
     count(&FaultCounts::received, d);
@@ -136,6 +186,20 @@ struct FaultProxy::State {
     if (uniform() < r.insert) {
       count(&FaultCounts::inserted, d);
       send(d, foreign_frame());
+    }
+    if (uniform() < r.foreign_session) {
+      const Datagram foreign = in_foreign_session(datagram);
+      if (!foreign.empty()) {
+        count(&FaultCounts::foreign_session, d);
+        send(d, foreign);
+      }
+    }
+    if (uniform() < r.resealed_flip) {
+      Datagram flipped = with_payload_flipped(datagram, r.max_flipped_bits);
+      if (!flipped.empty()) {
+        count(&FaultCounts::resealed_flipped, d);
+        datagram = std::move(flipped);
+      }
     }
     if (uniform() < r.flip && !datagram.empty()) {
       count(&FaultCounts::flipped, d);
@@ -205,6 +269,22 @@ void FaultProxy::stop() {
   if (!state_->thread.joinable()) return;
   state_->io.stop();
   state_->thread.join();
+}
+
+void FaultProxy::set_rates(const FaultRates& a_to_b, const FaultRates& b_to_a) {
+  if (!state_->thread.joinable()) {
+    state_->a_to_b.rates = a_to_b;
+    state_->b_to_a.rates = b_to_a;
+    return;
+  }
+  // On the proxy's thread, which reads the rates; waited for, so the caller's time is the switch.
+  std::promise<void> done;
+  asio::post(state_->io, [this, a_to_b, b_to_a, &done] {
+    state_->a_to_b.rates = a_to_b;
+    state_->b_to_a.rates = b_to_a;
+    done.set_value();
+  });
+  done.get_future().wait();
 }
 
 std::uint16_t FaultProxy::port_a() const { return state_->socket_a.local_endpoint().port(); }

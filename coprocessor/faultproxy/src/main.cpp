@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   using safecell::FaultRates;
   CLI::App app{
       "safecell-faultproxy: a UDP proxy that drops, duplicates, reorders, delays, "
-      "corrupts, inserts and cuts, seeded; prints what it did as JSON"};
+      "corrupts (below or above the CRC), inserts and cuts, seeded; prints what it did as JSON"};
   safecell::FaultProxySettings settings;
   FaultRates rates;
   std::string direction = "both";
@@ -51,6 +51,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--insert", rates.insert, "... is preceded by a foreign frame")
       ->check(probability);
+  app.add_option("--foreign-session", rates.foreign_session,
+                 "... is preceded by a copy under another session (needs --fingerprint)")
+      ->check(probability);
+  app.add_option("--resealed-flip", rates.resealed_flip,
+                 "... has payload bits flipped and is sealed again (needs --fingerprint)")
+      ->check(probability);
+  app.add_option("--fingerprint", settings.configuration_fingerprint,
+                 "The session's CRC fingerprint, for --foreign-session");
   app.add_option("--cut-after-ms", cut_after_ms, "The link is cut this long after the start")
       ->check(CLI::Range(0, 86'400'000));
   app.add_option("--cut-ms", cut_ms, "... for this long (0: no cut)")

@@ -19,11 +19,13 @@ std::uint64_t steady_now_ns() {
 }
 
 SensingService::SensingService(const CspaceGrid& grid, SensingPipeline& pipeline,
-                               CoprocessorLink& link, SensingServiceSettings settings)
+                               CoprocessorLink& link, SensingServiceSettings settings,
+                               CameraViews views)
     : grid_(grid),
       pipeline_(pipeline),
       link_(link),
       settings_(std::move(settings)),
+      views_(std::move(views)),
       joints_(settings_.joints),
       all_forbidden_(grid.cell_count()),
       last_map_(&all_forbidden_) {
@@ -41,7 +43,10 @@ SensingService::SensingService(const CspaceGrid& grid, SensingPipeline& pipeline
   });
 }
 
-const ServiceCycle& SensingService::process(const FrameSet& frames) {
+const ServiceCycle& SensingService::process(const FrameSet& delivered) {
+  frames_ = delivered;  // the images are shared, not copied; only the views change
+  views_.check(frames_);
+  const FrameSet& frames = frames_;
   ServiceCycle cycle;
   cycle.index = cycle_.index + 1;
   cycle.exposure_ns = steady_seconds_to_ns(median_exposure_s(frames));

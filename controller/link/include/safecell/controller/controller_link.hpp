@@ -69,6 +69,9 @@ enum class LinkBlock : std::uint8_t {
 
 const char* to_string(LinkBlock block) noexcept;
 
+// The cause of a stop request by name ("operator", "cameras", "watchdog"; "other"). Never null.
+const char* fault_cause_name(safecell_v1_FaultCause cause) noexcept;
+
 class ControllerLink {
  public:
   static constexpr int kMaxFramesPerPoll = 64;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "safecell/acquisition/frame_set.hpp"
+#include "safecell/cell/cell_model.hpp"
 #include "safecell/health/camera_health_monitor.hpp"
 
 namespace safecell {
@@ -37,5 +38,10 @@ class CameraViews {
   Log log_;
   std::vector<CameraFault> last_faults_;  // per camera; kNone before the first set
 };
+
+// The views of a cell's cameras: a monitor per camera, in the cell's order, against its reference
+// image (the empty cell). Throws std::invalid_argument when the counts differ.
+CameraViews camera_views_for(const CellModel& cell, const std::vector<cv::Mat>& references,
+                             CameraViews::Log log, const HealthSettings& settings = {});
 
 }  // namespace safecell

@@ -16,6 +16,9 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
 
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/closed_loop/closed_loop_record.hpp"
@@ -35,6 +38,7 @@ struct LockstepParts {
   double sync_error_s = 0.002;    // the fusion's timing allowance (FusionSettings)
   std::filesystem::path program;  // safecell-controller
   std::filesystem::path folder;   // controller.yaml and controller.log of the last scenario
+  std::vector<cv::Mat> camera_references;  // the empty cell per camera (health checks)
 };
 
 struct LockstepSettings {

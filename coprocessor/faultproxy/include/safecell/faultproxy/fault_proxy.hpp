@@ -20,6 +20,14 @@ struct FaultRates {
   double delay = 0.0;      // held back for delay_by
   double flip = 0.0;       // 1..max_flipped_bits random bits flipped
   double insert = 0.0;     // a foreign frame (another session and source) sent before it
+  // A copy of it sent first, sealed with a valid CRC but under another session id: what a stale
+  // or second coprocessor with the same ids and configuration would send (a masquerade). Needs
+  // FaultProxySettings::configuration_fingerprint; frames it cannot open are passed on as they are.
+  double foreign_session = 0.0;
+  // Bits flipped in its payload and the frame sealed again with a valid CRC: corruption the CRC
+  // cannot see (what a faulty device between the ends that re-frames data would do), left to
+  // the message's decoding and the map hash. Needs configuration_fingerprint, as above.
+  double resealed_flip = 0.0;
   std::chrono::microseconds delay_by{60'000};
   int max_flipped_bits = 8;
   // A slow stretch: every datagram from delay_after (since start) for delay_for is held back by
@@ -40,6 +48,9 @@ struct FaultProxySettings {
   FaultRates a_to_b;
   FaultRates b_to_a;
   std::uint64_t seed = 1;
+  // The session's implicit CRC fingerprint (configuration_fingerprint(grid, LUTs)), for
+  // FaultRates::foreign_session; 0: unknown.
+  std::uint64_t configuration_fingerprint = 0;
 };
 
 struct FaultCounts {
@@ -51,9 +62,11 @@ struct FaultCounts {
   std::uint64_t delayed = 0;
   std::uint64_t flipped = 0;
   std::uint64_t inserted = 0;
+  std::uint64_t foreign_session = 0;
+  std::uint64_t resealed_flipped = 0;
   std::uint64_t cut = 0;
   // Every datagram B (or A) received that is not exactly one A (or B) sent: flipped, inserted.
-  std::uint64_t altered() const { return flipped + inserted; }
+  std::uint64_t altered() const { return flipped + inserted + foreign_session + resealed_flipped; }
 };
 
 class FaultProxy {
@@ -66,6 +79,10 @@ class FaultProxy {
 
   void start();
   void stop();
+  // New rates from now on, for both directions (a campaign switches a fault on and off). Safe
+  // from any thread; takes effect on the proxy's thread a moment later (before the next
+  // datagram it handles once the call has returned, on a running proxy).
+  void set_rates(const FaultRates& a_to_b, const FaultRates& b_to_a);
 
   std::uint16_t port_a() const;  // where side A sends
   std::uint16_t port_b() const;  // where side B sends

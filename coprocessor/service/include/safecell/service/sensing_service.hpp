@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "safecell/acquisition/camera_views.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/link/coprocessor_link.hpp"
 #include "safecell/link/joint_buffer.hpp"
@@ -47,13 +48,16 @@ struct ServiceCycle {
 
 class SensingService {
  public:
-  // Keeps references to all arguments. Registers itself for the link's joint states.
+  // Keeps references to grid, pipeline and link. Registers itself for the link's joint states.
+  // views: the cameras' health checks (camera_views_for), which every frame set passes before
+  // the pipeline sees it: a frozen, blinded, black, moved or relit camera's view is unknown.
   SensingService(const CspaceGrid& grid, SensingPipeline& pipeline, CoprocessorLink& link,
-                 SensingServiceSettings settings);
+                 SensingServiceSettings settings, CameraViews views);
   SensingService(const SensingService&) = delete;
   SensingService& operator=(const SensingService&) = delete;
 
-  // One map cycle on `frames` (exposures in the coprocessor's steady clock).
+  // One map cycle on `frames` (exposures in the coprocessor's steady clock), after their health
+  // checks. Throws std::invalid_argument when the set's cameras are not the cell's.
   const ServiceCycle& process(const FrameSet& frames);
   // Serves the link (joint states, echoes) until `until` passes, and at least takes in what is
   // already waiting (so a loop that runs behind still hears the joint stream).
@@ -62,12 +66,17 @@ class SensingService {
   [[nodiscard]] const ServiceCycle& last_cycle() const { return cycle_; }
   [[nodiscard]] const JointBuffer& joints() const { return joints_; }
   [[nodiscard]] const CellSet& last_map() const { return *last_map_; }
+  // The last frame set as the pipeline saw it: each camera's view after its health check (for
+  // incidents and pictures).
+  [[nodiscard]] const FrameSet& last_frames() const { return frames_; }
 
  private:
   const CspaceGrid& grid_;
   SensingPipeline& pipeline_;
   CoprocessorLink& link_;
   SensingServiceSettings settings_;
+  CameraViews views_;
+  FrameSet frames_;
   JointBuffer joints_;
   CellSet all_forbidden_;
   const CellSet* last_map_;

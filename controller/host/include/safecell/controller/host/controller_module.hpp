@@ -17,6 +17,7 @@
 
 #include "safecell/controller/gross_motion.hpp"
 #include "safecell/controller/host/controller_config.hpp"
+#include "safecell/controller/host/cycle_trace.hpp"
 #include "safecell/controller/robot_port.hpp"
 #include "safecell/controller/safety_cycle.hpp"
 
@@ -66,6 +67,10 @@ class ControllerModule {
   TaskOutcome run(double max_duration_s, double status_period_s,
                   const std::function<void(const ModuleStatus&)>& status);
 
+  // Every cycle and link event from now on as JSON lines into `out` (cycle_trace.hpp), which must
+  // outlive the module; flushed with each status and at the end of run().
+  void trace_to(std::ostream& out);
+
   void request_stop() noexcept { stop_requested_ = true; }
   void acknowledge() noexcept { acknowledge_requested_ = true; }
   std::uint16_t listen_port() const;
@@ -94,6 +99,7 @@ class ControllerModule {
   ModuleStatus status_;
   TaskOutcome outcome_ = TaskOutcome::kStopped;
   RobotJoints robot_joints_{};  // the robot after the last cycle's step, before its command
+  std::unique_ptr<CycleTrace> trace_;
   std::atomic<bool> stop_requested_{false};
   std::atomic<bool> acknowledge_requested_{false};
 };
