@@ -37,6 +37,7 @@ const char* to_string(FaultClass fault) {
 const std::vector<FaultClass>& all_fault_classes() {
   static const std::vector<FaultClass> all = [] {
     std::vector<FaultClass> classes;
+    classes.reserve(kNames.size());
     for (const auto& entry : kNames) classes.push_back(entry.first);
     return classes;
   }();

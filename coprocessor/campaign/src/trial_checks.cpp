@@ -130,6 +130,12 @@ void check_stop(const TrialRecord& record, const TrialBounds& bounds, TrialResul
   const TraceCycle* hold = first_hold(record, record.fault_begin_ns);
   if (hold != nullptr) result.stop_ms = ms_between(record.fault_begin_ns, hold->t_ns);
   if (injected_at_a_rate(record.fault)) {
+    if (record.injected < 2) {
+      result.failures.push_back("only " + std::to_string(record.injected) +
+                                " fault(s) injected, too few to latch: the trial shows nothing "
+                                "(lengthen --fault-seconds or raise --rate)");
+      return;
+    }
     const TraceLinkError* latching = nullptr;
     for (const ControllerTrace& trace : record.traces) {
       for (const TraceLinkError& error : trace.link_errors) {

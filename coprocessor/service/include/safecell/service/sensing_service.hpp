@@ -56,9 +56,9 @@ class SensingService {
   SensingService(const SensingService&) = delete;
   SensingService& operator=(const SensingService&) = delete;
 
-  // One map cycle on `frames` (exposures in the coprocessor's steady clock), after their health
-  // checks. Throws std::invalid_argument when the set's cameras are not the cell's.
-  const ServiceCycle& process(const FrameSet& frames);
+  // One map cycle on the frames `delivered` (exposures in the coprocessor's steady clock), after
+  // their health checks. Throws std::invalid_argument when the set's cameras are not the cell's.
+  const ServiceCycle& process(const FrameSet& delivered);
   // Serves the link (joint states, echoes) until `until` passes, and at least takes in what is
   // already waiting (so a loop that runs behind still hears the joint stream).
   void serve_link(std::chrono::steady_clock::time_point until);
