@@ -1,6 +1,7 @@
 #include "safecell/cli/bench_command.hpp"
 
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "command_line.hpp"
 #include "end_to_end_bench.hpp"
 #include "safecell/bench/map_sequence_writer.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
@@ -183,6 +185,16 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
   report["repetitions"] = run.repetitions;
   report["benchmarks"] = std::move(all);
   out << report.dump(2) << '\n';
+}
+
+void add_bench_command(CLI::App& app, CommandLine& line) {
+  const auto bench = std::make_shared<BenchOptions>();
+  CLI::App* bench_command = app.add_subcommand(
+      "bench", "Run the project's benchmarks on the default cell (median and worst case)");
+  bench_command->add_flag("--json", bench->json, "Print one JSON object instead of a table");
+  bench_command->add_flag("--quick", bench->quick, "Short runs: a smoke test, not a measurement");
+  bench_command->callback(
+      [=, &line] { line.action = [=, &line] { run_bench(*bench, line.out, line.err); }; });
 }
 
 }  // namespace safecell

@@ -1,7 +1,10 @@
 #include "safecell/cli/camera_import_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
+#include <memory>
 
+#include "command_line.hpp"
 #include "safecell/camera/calibration_file.hpp"
 #include "safecell/camera/calibration_import.hpp"
 #include "safecell/cli/text_table.hpp"
@@ -51,6 +54,41 @@ void run_camera_import(const CameraImportOptions& options, std::ostream& out) {
     write_camera_calibration(file, camera);
     say_written(file, camera, out);
   }
+}
+
+void add_camera_import_command(CLI::App& camera, CommandLine& line) {
+  const auto import = std::make_shared<CameraImportOptions>();
+  CLI::App* import_command = camera.add_subcommand(
+      "import",
+      "Turn a calibration made with another tool into this project's calibration files (a cell "
+      "file's calibration:): a ROS camera_info file with the camera's cell pose, or an MC-Calib "
+      "result with its reference camera's cell pose. A pose file holds the extrinsic keys of a "
+      "calibration file only: cell_to_camera_rvec (or _rotation) and cell_to_camera_translation_m");
+  import_command->add_option("--ros", import->ros_file, "A ROS camera_info YAML file")
+      ->check(CLI::ExistingFile);
+  import_command
+      ->add_option("--mc-calib", import->mc_calib_file,
+                   "An MC-Calib result (calibrated_cameras_data.yml)")
+      ->check(CLI::ExistingFile);
+  import_command
+      ->add_option("--pose", import->pose_file,
+                   "Pose file: the camera's cell pose (ROS), or the reference camera's (MC-Calib)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  import_command->add_option(
+      "--units-m", import->units_m,
+      "MC-Calib (required): metres per unit of its translations, the unit of its "
+      "board's square_size (0.001 for mm, 0.01 for cm)");
+  import_command
+      ->add_option("--name", import->name,
+                   "The camera's name (ROS), or the stem of the names (MC-Calib: cam0, cam1, ...)")
+      ->capture_default_str();
+  import_command
+      ->add_option("--out", import->out,
+                   "The calibration file to write (ROS), or the folder for them (MC-Calib)")
+      ->required();
+  import_command->callback(
+      [=, &line] { line.action = [=, &line] { run_camera_import(*import, line.out); }; });
 }
 
 }  // namespace safecell

@@ -1,8 +1,11 @@
 #include "safecell/cli/campaign_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
+#include "command_line.hpp"
 #include "safecell/campaign/fault_campaign.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/closed_loop/controller_setup.hpp"
@@ -133,6 +136,54 @@ int run_campaign(const CampaignOptions& options, std::ostream& out, std::ostream
         << " trials; " << (settings.folder / "campaign.json").string() << ")\n";
   }
   return result.passed() ? 0 : 1;
+}
+
+void add_campaign_command(CLI::App& app, CommandLine& line) {
+  const auto campaign = std::make_shared<CampaignOptions>();
+  CLI::App* campaign_command = app.add_subcommand(
+      "campaign",
+      "Fault campaign on loopback with real processes: each fault class of SAFETY.md (link "
+      "corruption, repetition, reorder, loss, insertion, foreign session, delay, cut; wrong "
+      "fingerprint, coprocessor killed, controller restarted; cameras frozen, blinded, moved, "
+      "unplugged) injected into a working closed loop with safecell-controller; checks that the "
+      "robot is held in time, that no map the coprocessor did not send is accepted, that the "
+      "robot never moves on stale data, that the cause is named and that the loop recovers "
+      "after acknowledgement. Prints a table, writes <out>/campaign.json; exit 1 on a failure");
+  campaign_command->add_option("--faults", campaign->faults,
+                               "Comma-separated fault classes (default: all)");
+  campaign_command
+      ->add_option("--out", campaign->out_dir, "Folder for the trials and campaign.json")
+      ->capture_default_str();
+  campaign_command->add_option("--cell", campaign->cell_path,
+                               "The cell file (default: the built-in default cell)");
+  campaign_command->add_option("--lut-cache", campaign->lut_cache,
+                               "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                               "~/.cache/safecell");
+  campaign_command
+      ->add_option("--settle", campaign->settle_s, "Seconds the robot works before each fault")
+      ->capture_default_str();
+  campaign_command->add_option("--fault-seconds", campaign->fault_s, "Seconds each fault lasts")
+      ->capture_default_str();
+  campaign_command
+      ->add_option("--recover", campaign->recover_s,
+                   "Seconds after each fault for acknowledgement and recovery")
+      ->capture_default_str();
+  campaign_command
+      ->add_option("--rate", campaign->rate,
+                   "Probability per datagram of the faults injected at a rate")
+      ->capture_default_str();
+  campaign_command->add_option("--seed", campaign->seed, "Seed of the proxy and the sensor noise")
+      ->capture_default_str();
+  campaign_command->add_flag("--json", campaign->json, "Print campaign.json instead of the table");
+  campaign_command->add_option("--controller-program", campaign->controller_program,
+                               "The safecell-controller program (default: beside safecell)");
+  campaign_command->add_option(
+      "--test-only-controller-limits-ms", campaign->test_only_controller_limits_ms,
+      "The negative control: the controller's watchdog and data age limit in ms instead of "
+      "250 (the checks keep 250): the campaign must then fail");
+  campaign_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_campaign(*campaign, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

@@ -1,9 +1,12 @@
 #include "safecell/cli/cell_coverage_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
+#include "command_line.hpp"
 #include "coverage_picture.hpp"
 #include "png_output.hpp"
 #include "progress_bar.hpp"
@@ -61,6 +64,25 @@ void run_cell_coverage(const CellCoverageOptions& options, std::ostream& out, st
       << " of " << grouped(coverage.reach_positions()) << " positions blind ("
       << fixed(100.0 * coverage.reach_blind_share(), 1)
       << " %)\n  picture: " << (folder / "floor_coverage.png").string() << "\n";
+}
+
+void add_cell_coverage_command(CLI::App& cell, CommandLine& line) {
+  const auto coverage = std::make_shared<CellCoverageOptions>();
+  CLI::App* coverage_command = cell.add_subcommand(
+      "coverage",
+      "Where a person can stand that too few cameras see: a floor plan (PNG) of the cameras "
+      "seeing each position, and the blind share of the robot's reach");
+  coverage_command->add_option("--cell", coverage->cell_path,
+                               "Cell file (YAML); without it the built-in default cell");
+  coverage_command->add_option("--out", coverage->out_dir, "Folder for the picture and the JSON")
+      ->capture_default_str();
+  coverage_command->add_option("--step", coverage->step_m, "Floor grid spacing, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.02, 1.0));
+  coverage_command->add_flag("--json", coverage->json, "Print one JSON object instead of text");
+  coverage_command->callback([=, &line] {
+    line.action = [=, &line] { run_cell_coverage(*coverage, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

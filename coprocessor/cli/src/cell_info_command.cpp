@@ -1,7 +1,10 @@
 #include "safecell/cli/cell_info_command.hpp"
 
+#include <CLI/CLI.hpp>
+#include <memory>
 #include <nlohmann/json.hpp>
 
+#include "command_line.hpp"
 #include "safecell/base/freestanding_math.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
@@ -95,6 +98,16 @@ void run_cell_info(const CellInfoOptions& options, std::ostream& out) {
   } else {
     print_text(model, grid, out);
   }
+}
+
+void add_cell_info_command(CLI::App& cell, CommandLine& line) {
+  const auto cell_info = std::make_shared<CellInfoOptions>();
+  CLI::App* info = cell.add_subcommand(
+      "info", "Show the C-space grid of a cell: per joint range, l_i, dq_i and cell count");
+  info->add_option("--cell", cell_info->cell_path,
+                   "Cell file (YAML); without it the built-in default cell of the paper");
+  info->add_flag("--json", cell_info->json, "Print one JSON object instead of a table");
+  info->callback([=, &line] { line.action = [=, &line] { run_cell_info(*cell_info, line.out); }; });
 }
 
 }  // namespace safecell

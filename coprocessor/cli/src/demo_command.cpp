@@ -1,13 +1,16 @@
 #include "safecell/cli/demo_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <random>
 
+#include "command_line.hpp"
 #include "demo_report.hpp"
 #include "incident_feed.hpp"
 #include "safecell/cell/default_cell.hpp"
@@ -247,6 +250,60 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   const bool safe =
       write_demo_report(out_dir, sensing, world, session.setup().goals_rad, run, out, err);
   return safe ? 0 : kExitValidationFailed;
+}
+
+void add_demo_command(CLI::App& app, CommandLine& line) {
+  const auto demo = std::make_shared<DemoOptions>();
+  CLI::App* demo_command = app.add_subcommand(
+      "demo",
+      "The closed loop on the simulated cell, in real time: this coprocessor and "
+      "safecell-controller "
+      "(the controller core on the simulated robot, a second process) over loopback UDP; the robot "
+      "works through a pick-and-place task while a person walks in, reaches towards it and leaves. "
+      "Writes a report folder (index.html, timeline.png, camera views, C-space slices, "
+      "summary.json)");
+  demo_command->add_option("--cell", demo->cell_path,
+                           "Cell file (YAML); without it the built-in default cell");
+  demo_command->add_option("--seconds", demo->seconds, "Duration (real time), 5..3600 s")
+      ->capture_default_str();
+  demo_command->add_option("--fps", demo->fps, "Camera frames per second, 2..60")
+      ->capture_default_str();
+  demo_command->add_option("--out", demo->out_dir, "Report folder")->capture_default_str();
+  demo_command->add_option("--lut-cache", demo->lut_cache,
+                           "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                           "~/.cache/safecell");
+  demo_command->add_option("--seed", demo->seed, "Seed of the sensor noise and the checks")
+      ->capture_default_str();
+  demo_command
+      ->add_option("--views-every", demo->views_every_s,
+                   "Seconds between saved camera views and slices (0: none)")
+      ->capture_default_str();
+  demo_command
+      ->add_option("--checks-per-frame", demo->checks_per_cycle,
+                   "Configurations checked against the map (FCL) per checked frame")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 10000));
+  demo_command
+      ->add_option("--check-every", demo->check_every, "Frames between checked frames (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000000));
+  demo_command
+      ->add_option("--acknowledge-after", demo->acknowledge_after_s,
+                   "The demo's operator acknowledges a controller fault after it held this many "
+                   "seconds (0: never)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 3600.0));
+  demo_command
+      ->add_option("--incident-seconds", demo->incident_seconds,
+                   "Seconds before each stop or fault written into <out>/incidents for safecell "
+                   "replay (0: none)")
+      ->capture_default_str();
+  demo_command->add_option("--controller-program", demo->controller_program,
+                           "The safecell-controller program; default $SAFECELL_CONTROLLER, the one "
+                           "beside safecell, or the one this build made");
+  demo_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_demo(*demo, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

@@ -1,9 +1,12 @@
 #include "safecell/cli/images_show_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "command_line.hpp"
 #include "png_output.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_model.hpp"
@@ -88,6 +91,30 @@ void run_images_show(const ImagesShowOptions& options, std::ostream& out) {
         << cv::countNonZero(blocked) << " of " << model.feature_grid.cell_count()
         << " feature cells blocked; wrote " << (directory / (name + "_*.png")).string() << '\n';
   }
+}
+
+void add_images_show_command(CLI::App& images, CommandLine& line) {
+  const auto show = std::make_shared<ImagesShowOptions>();
+  CLI::App* show_command = images.add_subcommand(
+      "show",
+      "Write, per camera of the simulated cell, the frame, its five feature images, the reference "
+      "image and the blocked feature cells over the frame (PNG)");
+  show_command->add_option("--cell", show->cell_path,
+                           "Cell file (YAML); without it the built-in default cell");
+  show_command->add_option("--q", show->q_deg, "Joint values of the shown frame in degrees")
+      ->capture_default_str();
+  show_command->add_option("--human", show->humans, "A human at x,y[,heading_deg]; repeat for more")
+      ->capture_default_str();
+  show_command->add_option("--out", show->out_dir, "Folder for the PNG files")->required();
+  show_command
+      ->add_option("--seed", show->seed, "Seed of the noise and the candidate configurations")
+      ->capture_default_str();
+  show_command
+      ->add_option("--reference-frames", show->reference_frames,
+                   "Frames in the median reference image (the paper: 9)")
+      ->capture_default_str();
+  show_command->callback(
+      [=, &line] { line.action = [=, &line] { run_images_show(*show, line.out); }; });
 }
 
 }  // namespace safecell

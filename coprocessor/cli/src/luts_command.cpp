@@ -1,13 +1,16 @@
 #include "safecell/cli/luts_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <vector>
 
+#include "command_line.hpp"
 #include "lut_loading.hpp"
 #include "progress_bar.hpp"
 #include "safecell/cell/cell_file.hpp"
@@ -186,6 +189,44 @@ int run_luts_info(const LutsInfoOptions& options, std::ostream& out, std::ostrea
     for (const auto& report : reports) print_summary(report, out);
   }
   return refused > 0 ? kExitBadInput : 0;
+}
+
+void add_luts_build_and_info_commands(CLI::App& luts, CommandLine& line) {
+  const auto build = std::make_shared<LutsBuildOptions>();
+  CLI::App* build_command = luts.add_subcommand(
+      "build",
+      "Build the tables of a cell from its robot model and camera calibrations (model mode) into "
+      "a folder, one file per fingerprint; a file already there is kept");
+  build_command->add_option("--cell", build->cell_path,
+                            "Cell file (YAML); without it the built-in default cell");
+  build_command->add_option("--out", build->out_dir,
+                            "Folder for the LUT file; without it the cache folder "
+                            "($SAFECELL_CACHE or ~/.cache/safecell)");
+  build_command
+      ->add_option("--ball-radius", build->ball_radius_m,
+                   "Size of the balls covering the robot, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.005, 0.5));
+  build_command
+      ->add_option("--padding", build->padding_m,
+                   "Margin added all round the robot, metres (calibration error)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  build_command->add_option("--threads", build->threads, "Worker threads; 0: one per core")
+      ->capture_default_str();
+  build_command->add_flag("--force", build->force, "Build again even when the file exists");
+  build_command->add_flag("--json", build->json, "Print one JSON object instead of a table");
+  build_command->callback(
+      [=, &line] { line.action = [=, &line] { run_luts_build(*build, line.out, line.err); }; });
+  const auto lut_info = std::make_shared<LutsInfoOptions>();
+  CLI::App* info_command = luts.add_subcommand(
+      "info", "What a LUT file holds: sizes per camera, compression, cells, fingerprint");
+  info_command->add_option("path", lut_info->path, "A LUT file (*.sclut) or a folder of them")
+      ->required();
+  info_command->add_flag("--json", lut_info->json, "Print JSON instead of a table");
+  info_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_luts_info(*lut_info, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

@@ -1,11 +1,13 @@
 #include "safecell/cli/luts_record_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "command_line.hpp"
 #include "progress_bar.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
@@ -146,6 +148,52 @@ int run_luts_check(const LutsRecordOptions& options, std::ostream& out, std::ost
     print_agreement(agreement, options.min_coverage, out);
   }
   return flagged ? kExitCameraFlagged : 0;
+}
+
+void add_luts_record_and_check_commands(CLI::App& luts, CommandLine& line) {
+  const auto record = std::make_shared<LutsRecordOptions>();
+  const auto add_recording_options = [&record](CLI::App* command) {
+    command->add_option("--cell", record->cell_path,
+                        "Cell file (YAML); without it the built-in default cell");
+    command
+        ->add_option("--key-stride", record->key_stride,
+                     "Cells between key configurations along each discretised joint (1: every "
+                     "cell, the paper's brute force)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    command
+        ->add_option("--wrist-samples", record->wrist_samples,
+                     "Values recorded per joint that is not discretised")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 64));
+    command
+        ->add_option("--min-coverage", record->min_coverage,
+                     "Share of the recorded robot that must lie inside the model's silhouettes")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
+    command->add_flag("--json", record->json, "Print one JSON object instead of a table");
+  };
+  CLI::App* record_command = luts.add_subcommand(
+      "record",
+      "Build the tables from difference images of the robot at key configurations (recorded "
+      "mode; the simulated cell stands in for the real robot and cameras)");
+  add_recording_options(record_command);
+  record_command->add_option("--out", record->out_dir, "Folder for the LUT file")->required();
+  record_command
+      ->add_option("--padding", record->padding_m, "Margin added to the motion bound, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  record_command->callback(
+      [=, &line] { line.action = [=, &line] { run_luts_record(*record, line.out, line.err); }; });
+  CLI::App* check_command = luts.add_subcommand(
+      "check",
+      "Compare what each camera sees of the robot with the model's silhouettes and flag a "
+      "camera whose calibration is off (exit 1); the simulated cell stands in for the real "
+      "robot and cameras");
+  add_recording_options(check_command);
+  check_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_luts_check(*record, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

@@ -1,13 +1,16 @@
 #include "safecell/cli/replay_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <bit>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "camera_reference.hpp"
+#include "command_line.hpp"
 #include "cspace_pictures.hpp"
 #include "demo_report.hpp"
 #include "lut_loading.hpp"
@@ -234,6 +237,30 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
       << (differing == 0 ? "every map as sent" : std::to_string(differing) + " differ")
       << "; report " << (out_dir / "index.html").string() << '\n';
   return differing == 0 ? 0 : 1;
+}
+
+void add_replay_command(CLI::App& app, CommandLine& line) {
+  const auto replay = std::make_shared<ReplayOptions>();
+  CLI::App* replay_command = app.add_subcommand(
+      "replay",
+      "Run the sensing pipeline again on an incident folder that safecell run recorded: every "
+      "cycle's recorded frames and robot pose give a forbidden map, compared bit for bit with "
+      "the map sent then; the report (cameras, C-space slice, timeline, index.html) goes into "
+      "<incident>/replay. Exit 1 when a map differs");
+  replay_command->add_option("incident", replay->incident_dir, "The incident folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  replay_command->add_option("--cell", replay->cell_path,
+                             "The cell file (default: the one the incident names; its text must "
+                             "be the recorded one)");
+  replay_command->add_option("--lut-cache", replay->lut_cache,
+                             "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                             "~/.cache/safecell");
+  replay_command->add_option("--out", replay->out_dir,
+                             "Folder for the report (default: <incident>/replay)");
+  replay_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_replay(*replay, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

@@ -1,15 +1,18 @@
 #include "safecell/cli/run_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "camera_reference.hpp"
+#include "command_line.hpp"
 #include "incident_feed.hpp"
 #include "lut_loading.hpp"
 #include "safecell/acquisition/cell_camera_sources.hpp"
@@ -361,6 +364,73 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       << figures.all_forbidden_cycles << ", short of views " << figures.cycles_short_of_views
       << "; summary " << (out_dir / "run_summary.json").string() << '\n';
   return 0;
+}
+
+void add_run_command(CLI::App& app, CommandLine& line) {
+  const auto run = std::make_shared<RunOptions>();
+  CLI::App* run_command = app.add_subcommand(
+      "run",
+      "The coprocessor service on the cell file's cameras (each camera's source: a capture "
+      "device, a video file, an image folder with frame_times.csv, a GStreamer pipeline or an "
+      "RTSP URL), sending its maps to a safecell-controller over UDP. Recordings play at their "
+      "recorded pace. Stops on SIGINT or SIGTERM, after --seconds, or when every camera has "
+      "stopped; the controller then gets a stop request and holds the robot");
+  run_command->add_option("--cell", run->cell_path, "Cell file (YAML) whose cameras name a source")
+      ->required();
+  run_command->add_option("--lut-cache", run->lut_cache,
+                          "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                          "~/.cache/safecell");
+  run_command
+      ->add_option("--controller", run->controller,
+                   "The controller's UDP address, HOST:PORT (its link.listen)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--listen", run->listen,
+                   "This end's UDP address, HOST:PORT (the controller's link.coprocessor)")
+      ->capture_default_str();
+  run_command->add_option("--reference", run->reference_dir,
+                          "Folder of reference images, <camera>.png each (the empty cell)");
+  run_command->add_flag("--record-reference", run->record_reference,
+                        "Record the reference images at the start instead (nobody may be in the "
+                        "cell; the robot may move) and write them to <out>/reference");
+  run_command
+      ->add_option("--reference-sets", run->reference_sets,
+                   "Frame sets whose median is the recorded reference")
+      ->capture_default_str();
+  run_command->add_option("--seconds", run->seconds, "Stop after this long (0: until stopped)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--out", run->out_dir,
+                   "Folder for the recorded reference and "
+                   "run_summary.json")
+      ->capture_default_str();
+  run_command
+      ->add_option("--incident-seconds", run->incident_seconds,
+                   "Seconds before each stop or fault the incident recorder writes into "
+                   "<out>/incidents (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 60.0));
+  run_command
+      ->add_option("--max-acceleration", run->max_acceleration_rad_s2,
+                   "The robot's largest joint acceleration, rad/s^2 (bounds the joint stream's "
+                   "interpolation error)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--fps", run->fps, "The cameras' frame rate (announced to the controller)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--sync-error", run->sync_error_ms,
+                   "How far apart the cameras' exposures may be, ms (hardware-triggered cameras: "
+                   "a few; free-running ones up to a frame period, which widens the robot's "
+                   "removal)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--connect-timeout", run->connect_timeout_s,
+                   "Seconds to wait for the controller's answer")
+      ->capture_default_str();
+  run_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_service(*run, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell

@@ -1,8 +1,11 @@
 #include "safecell/cli/sim_render_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
+#include "command_line.hpp"
 #include "png_output.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_model.hpp"
@@ -61,6 +64,30 @@ void run_sim_render(const SimRenderOptions& options, std::ostream& out) {
     out << "ground truth: robot " << (truth.collides(robot) ? "COLLIDES with" : "clear of")
         << " the obstacles; minimum distance " << fixed(truth.min_distance_m(robot), 3) << " m\n";
   }
+}
+
+void add_sim_render_command(CLI::App& sim, CommandLine& line) {
+  const auto render = std::make_shared<SimRenderOptions>();
+  CLI::App* render_command = sim.add_subcommand(
+      "render", "Write what every camera sees (PNG) for one robot configuration and some humans");
+  render_command->add_option("--cell", render->cell_path,
+                             "Cell file (YAML); without it the built-in default cell");
+  render_command->add_option("--q", render->q_deg,
+                             "Joint values in degrees, comma-separated, e.g. 0,30,60,0,45,0");
+  render_command->add_option("--q-rad", render->q_rad, "Joint values in radians instead");
+  render_command->add_option("--human", render->humans,
+                             "A human standing at x,y (metres, on the floor), optionally facing "
+                             "x,y,heading_deg; repeat for more");
+  render_command->add_option("--out", render->out_dir, "Folder for the PNG files")->required();
+  render_command->add_option("--seed", render->seed, "Seed of the sensor noise")
+      ->capture_default_str();
+  render_command->add_option("--noise", render->noise_sigma, "Sensor noise sigma in gray levels")
+      ->capture_default_str();
+  render_command->add_flag("--visual", render->visual,
+                           "Show the robot's visual geometry (meshes) instead of its collision "
+                           "geometry");
+  render_command->callback(
+      [=, &line] { line.action = [=, &line] { run_sim_render(*render, line.out); }; });
 }
 
 }  // namespace safecell

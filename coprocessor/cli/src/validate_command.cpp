@@ -1,15 +1,19 @@
 #include "safecell/cli/validate_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "command_line.hpp"
 #include "lut_loading.hpp"
 #include "progress_bar.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
+#include "safecell/cli/closed_loop_validate_command.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/errors/input_error.hpp"
 #include "safecell/lut/model_silhouettes.hpp"
@@ -206,6 +210,170 @@ int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
   }
   std::sort(merged_run.shards.begin(), merged_run.shards.end());
   return emit(merged_run, merged, options.json, out);
+}
+
+void add_validate_command(CLI::App& app, CommandLine& line) {
+  const auto validate = std::make_shared<ValidateOptions>();
+  CLI::App* validate_command = app.add_subcommand(
+      "validate",
+      "Run the sensing pipeline on random simulated scenes and compare the forbidden map with "
+      "the exact collisions (FCL); fails when a collision with a seen obstacle is not forbidden. "
+      "With --closed-loop: the whole system (pipeline, link, safecell-controller, robot) in "
+      "simulated time with people walking in; fails when the robot touches a person while "
+      "moving");
+  validate_command->add_option("--cell", validate->cell_path,
+                               "Cell file (YAML); without it the built-in default cell");
+  validate_command->add_option("--scenes", validate->scenes, "Random scenes")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  validate_command->add_option("--seed", validate->seed, "Seed of the scenes")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--configs", validate->configurations, "Robot configurations checked per scene")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  validate_command->add_option("--humans", validate->humans, "At most this many humans per scene")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
+  validate_command
+      ->add_option("--objects", validate->objects,
+                   "At most this many boxes per scene (objects the cell file does not know)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 10));
+  validate_command
+      ->add_option("--removal", validate->removal, "Robot removal: occlusion-aware or plain")
+      ->capture_default_str();
+  validate_command->add_option("--lut-cache", validate->lut_cache,
+                               "Folder of cached look-up tables; default $SAFECELL_CACHE or "
+                               "~/.cache/safecell");
+  validate_command
+      ->add_option("--padding", validate->padding_m,
+                   "Margin added all round the robot in the tables and in robot removal, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  validate_command
+      ->add_option("--ball-radius", validate->ball_radius_m,
+                   "Size of the balls covering the robot, metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.005, 0.5));
+  validate_command
+      ->add_option("--m-max", validate->m_max_m,
+                   "Max-move m_max of the C-space grid, metres (default: the cell's)")
+      ->check(CLI::Range(0.01, 1.0));
+  validate_command
+      ->add_option("--camera-threshold", validate->camera_threshold,
+                   "Cameras that must see a cell blocked (default: the cell's)")
+      ->check(CLI::Range(1, 64));
+  validate_command->add_flag(
+      "--model-error", validate->documented_model_error,
+      "Apply the documented tolerances to the simulated world: cameras turned 0.5 deg and moved "
+      "1 cm, focal length 1 % off, lens k1 -0.02, the robot 5 mm larger");
+  validate_command
+      ->add_option("--camera-rotation-error", validate->camera_rotation_error_deg,
+                   "Each simulated camera turned this far about a random axis, degrees")
+      ->check(CLI::Range(0.0, 10.0));
+  validate_command
+      ->add_option("--camera-translation-error", validate->camera_translation_error_m,
+                   "Each simulated camera moved this far, metres")
+      ->check(CLI::Range(0.0, 0.5));
+  validate_command
+      ->add_option("--focal-error", validate->focal_error,
+                   "Each simulated camera's focal length off by this fraction (0.01: 1 %)")
+      ->check(CLI::Range(0.0, 0.2));
+  CLI::Option* lens_k1 =
+      validate_command
+          ->add_option("--lens-k1", validate->lens_k1,
+                       "Radial distortion of the simulated lenses the model does not know")
+          ->check(CLI::Range(-0.5, 0.5));
+  validate_command
+      ->add_option("--robot-growth", validate->robot_growth_m,
+                   "The simulated robot this much larger all round than its model, metres")
+      ->check(CLI::Range(0.0, 0.2));
+  validate_command
+      ->add_option("--trace-needless-stops", validate->traced_per_scene,
+                   "Needless stops per scene traced to a cause (cell size, visual hull, envelope)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  validate_command
+      ->add_option("--negative-control", validate->negative_control,
+                   "Break the pipeline on purpose to show the check fails: none, empty-masks, "
+                   "dropped-strip or envelope-removal; with --closed-loop: look-ahead-off")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--shard", validate->shard,
+                   "K/N: run only the K-th of N disjoint parts of the scenes (merge the JSON "
+                   "reports with `validate merge`)")
+      ->capture_default_str();
+  validate_command->add_option("--threads", validate->threads, "Worker threads; 0: one per core")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 256));
+  validate_command->add_flag("--json", validate->json, "Print one JSON object instead of text");
+  const auto closed_loop = std::make_shared<bool>(false);
+  const auto loop = std::make_shared<ClosedLoopValidateOptions>();
+  validate_command->add_flag("--closed-loop", *closed_loop,
+                             "Validate the closed loop in simulated time (the options below)");
+  validate_command
+      ->add_option("--scenarios", loop->scenarios, "Closed loop: random scenarios (task + person)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--first", loop->first,
+                   "Closed loop: index of the first scenario (to run one of a run again)")
+      ->capture_default_str();
+  validate_command->add_option("--fps", loop->fps, "Closed loop: camera frames per second")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--latency", loop->latency_ms,
+                   "Closed loop: exposure to map at the controller, ms (below a frame period)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--max-seconds", loop->max_seconds,
+                   "Closed loop: a scenario ends after this long (simulated seconds)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--task-pool", loop->task_pool,
+                   "Closed loop: robot tasks the scenarios share (each run once without people)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--out", loop->out_dir,
+                   "Closed loop: folder for closed_loop.json and the last controller's log")
+      ->capture_default_str();
+  validate_command->add_flag("--trace", loop->trace,
+                             "Closed loop: every controller cycle of each scenario as a CSV in "
+                             "--out (time, state, joints, the person, the distance)");
+  validate_command->add_option("--controller-program", loop->controller_program,
+                               "Closed loop: the safecell-controller program (default: found "
+                               "beside safecell or from $SAFECELL_CONTROLLER)");
+  validate_command->require_subcommand(0, 1);
+  const auto merge = std::make_shared<ValidateMergeOptions>();
+  CLI::App* merge_command = validate_command->add_subcommand(
+      "merge", "Add the JSON reports of the shards of one run into the report of the whole run");
+  merge_command->add_option("files", merge->files, "JSON reports of `validate --json --shard K/N`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  merge_command->add_flag("--json", merge->json, "Print one JSON object instead of text");
+  merge_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_validate_merge(*merge, line.out); };
+  });
+  validate_command->callback([=, &line] {
+    if (merge_command->parsed()) return;
+    validate->lens_k1_set = lens_k1->count() > 0;
+    if (*closed_loop) {
+      loop->cell_path = validate->cell_path;
+      loop->lut_cache = validate->lut_cache;
+      loop->seed = validate->seed;
+      loop->json = validate->json;
+      loop->look_ahead_off = validate->negative_control == "look-ahead-off";
+      line.action = [=, &line] {
+        if (!loop->look_ahead_off && validate->negative_control != "none") {
+          bad_option("--negative-control", validate->negative_control,
+                     "none or look-ahead-off with --closed-loop");
+        }
+        line.exit_code = run_closed_loop_validate(*loop, line.out, line.err);
+      };
+      return;
+    }
+    line.action = [=, &line] { line.exit_code = run_validate(*validate, line.out, line.err); };
+  });
 }
 
 }  // namespace safecell
