@@ -152,8 +152,7 @@ TEST(TrialChecks, AFaultAtARateMustLatch) {
   // One fault injected cannot latch: the trial says it shows nothing, rather than pass.
   record.injected = 1;
   result = check_trial(record, TrialBounds{});
-  EXPECT_NE(failures_of(result).find("too few to latch"), std::string::npos)
-      << failures_of(result);
+  EXPECT_NE(failures_of(result).find("too few to latch"), std::string::npos) << failures_of(result);
 }
 
 TEST(TrialChecks, TheWrongFingerprintMustBeRefusedAndTheRobotNeverMove) {
