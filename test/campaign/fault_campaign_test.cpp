@@ -69,22 +69,27 @@ TEST(FaultCampaign, EveryFaultClassIsHeldInTimeAndNothingWrongIsAccepted) {
 }
 
 TEST(FaultCampaign, AControllerWithTooLongAWatchdogFails) {
+  // Three faults that silence the link for 1.5 s. A controller with a 2 s watchdog keeps moving
+  // on its last map, which must show as motion on stale data. Something else may still hold the
+  // robot in one trial by chance (a late cycle under load trips the cycle's own watchdog), so
+  // the campaign must fail and at least one trial must show the stale motion itself.
   const test::ScratchFolder scratch("campaign-negative");
   const fs::path out = scratch.path() / "campaign";
   std::vector<std::string> arguments = campaign_arguments(scratch.path(), out);
-  for (const char* extra :
-       {"--faults", "link-cut,coprocessor-killed", "--test-only-controller-limits-ms", "2000"}) {
+  for (const char* extra : {"--faults", "link-cut,coprocessor-killed,delay",
+                            "--test-only-controller-limits-ms", "2000"}) {
     arguments.emplace_back(extra);
   }
   const auto run = test::safecell_cli(arguments);
   std::cout << run.out;
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   const nlohmann::json result = campaign_json(out);
-  ASSERT_EQ(result["trials"].size(), 2U);
+  ASSERT_EQ(result["trials"].size(), 3U);
+  int stale_motion = 0;
   for (const nlohmann::json& trial : result["trials"]) {
-    EXPECT_FALSE(trial["passed"].get<bool>()) << trial.dump();
-    EXPECT_GT(trial["stale_motion_cycles"].get<int>(), 0) << trial.dump();
+    stale_motion += trial["stale_motion_cycles"].get<int>();
   }
+  EXPECT_GT(stale_motion, 0) << result.dump(2);
 }
 
 }  // namespace

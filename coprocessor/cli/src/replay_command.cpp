@@ -34,12 +34,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string hex(std::uint64_t value) {
-  std::ostringstream text;
-  text << std::hex << value;
-  return text.str();
-}
-
 // The replay must run on what the service ran with, or its maps mean nothing: first the cell
 // file's text (before it is loaded, so a file that moved is named as such).
 // An empty path: the built-in default cell (the demo's without --cell).
@@ -65,8 +59,8 @@ void check_setup(const Incident& incident, const fs::path& cell_path, const Cell
     throw InputError(cell_path.string() + ": its cameras are not the incident's");
   }
   if (grid.fingerprint() != incident.setup.grid_fingerprint) {
-    throw InputError(cell_path.string() + ": grid fingerprint " + hex(grid.fingerprint()) +
-                     ", the incident was recorded with " + hex(incident.setup.grid_fingerprint) +
+    throw InputError(cell_path.string() + ": grid fingerprint " + fingerprint_hex(grid.fingerprint()) +
+                     ", the incident was recorded with " + fingerprint_hex(incident.setup.grid_fingerprint) +
                      " (a file the cell names has changed: the robot?)");
   }
 }
@@ -122,8 +116,8 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
   const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
   if (luts.set.fingerprint != incident.setup.lut_fingerprint) {
     throw InputError("the tables for " + cell_path.string() + " have fingerprint " +
-                     hex(luts.set.fingerprint) + ", the incident was recorded with " +
-                     hex(incident.setup.lut_fingerprint));
+                     fingerprint_hex(luts.set.fingerprint) + ", the incident was recorded with " +
+                     fingerprint_hex(incident.setup.lut_fingerprint));
   }
   const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
   const std::vector<cv::Mat> reference = read_reference_images(folder / "reference", cell);

@@ -264,4 +264,10 @@ CellSet read_incident_map(const fs::path& folder, const IncidentCycle& cycle,
   return map;
 }
 
+std::string fingerprint_hex(std::uint64_t fingerprint) {
+  std::ostringstream text;
+  text << std::hex << fingerprint;
+  return text.str();
+}
+
 }  // namespace safecell

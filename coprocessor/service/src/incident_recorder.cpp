@@ -48,12 +48,6 @@ void write_bits(const fs::path& file, const CellSet& map) {
   write_text(file, bytes);
 }
 
-std::string hex(std::uint64_t value) {
-  std::ostringstream text;
-  text << std::hex << value;
-  return text.str();
-}
-
 nlohmann::ordered_json cycle_json(const IncidentCycle& cycle) {
   nlohmann::ordered_json entry;
   entry["cycle"] = cycle.index;
@@ -108,8 +102,8 @@ void write_into(const fs::path& partial, const IncidentContent& content,
   incident["causes"] = content.causes;
   incident["trigger_s"] = content.trigger_s;
   incident["setup"] = {{"cell_file", setup.cell_file.string()},
-                       {"grid_fingerprint", hex(setup.grid_fingerprint)},
-                       {"lut_fingerprint", hex(setup.lut_fingerprint)},
+                       {"grid_fingerprint", fingerprint_hex(setup.grid_fingerprint)},
+                       {"lut_fingerprint", fingerprint_hex(setup.lut_fingerprint)},
                        {"sync_error_s", setup.sync_error_s}};
   write_text(partial / "cell.yaml", setup.cell_text);
 

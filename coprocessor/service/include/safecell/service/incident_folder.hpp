@@ -92,4 +92,8 @@ std::filesystem::path incident_frame_file(const std::filesystem::path& folder,
                                           const std::string& camera, std::uint64_t cycle);
 std::filesystem::path incident_map_file(const std::filesystem::path& folder, std::uint64_t cycle);
 
+// A fingerprint as the incident's setup writes it (hexadecimal, no prefix), for the recorder and
+// for messages that compare one with it.
+std::string fingerprint_hex(std::uint64_t fingerprint);
+
 }  // namespace safecell
