@@ -103,12 +103,14 @@ Recording record_cell(const fs::path& folder) {
 }
 
 // A safecell-controller configured by `safecell controller config` for the cell (the simulated
-// robot held at its start, where the recording shows it), listening on a free port and answering
-// the coprocessor at `coprocessor_port`.
+// robot held at its start, where the recording shows it), listening on a free port (or the one
+// given) and answering the coprocessor at `coprocessor_port`.
 class Controller {
  public:
-  Controller(const Recording& recording, const fs::path& folder, std::uint16_t coprocessor_port)
-      : log_(folder / "controller.log"), listen_port_(free_udp_port()) {
+  Controller(const Recording& recording, const fs::path& folder, std::uint16_t coprocessor_port,
+             std::uint16_t listen_port = 0)
+      : log_(folder / "controller.log"),
+        listen_port_(listen_port != 0 ? listen_port : free_udp_port()) {
     const fs::path config = folder / "controller.yaml";
     const test::CliRun written = test::safecell_cli(
         {"controller", "config", "--cell", recording.cell_file.string(), "--lut-cache",
@@ -122,6 +124,7 @@ class Controller {
   }
   [[nodiscard]] std::string address() const { return "127.0.0.1:" + std::to_string(listen_port_); }
   [[nodiscard]] const fs::path& log() const { return log_; }
+  [[nodiscard]] std::uint16_t listen_port() const { return listen_port_; }
   ControllerProcess& process() { return *process_; }
 
  private:
@@ -317,6 +320,45 @@ TEST_F(RunCommand, SigtermToTheProgramIsAStopRequestAndKillingItIsNot) {
     EXPECT_EQ(requested, !killed) << read_text(controller.log());
     controller.process().stop(3s);
   }
+}
+
+TEST_F(RunCommand, ARestartedControllerGetsANewSession) {
+  // The controller killed mid-run and started again on the same port knows no session and holds
+  // the robot; safecell run hears nothing from it, opens a new session, and the new program takes
+  // maps. Without that the robot would stay held until safecell run was restarted by hand.
+  const fs::path out = folder("controller-restarted");
+  const std::uint16_t port = free_udp_port();
+  std::optional<Controller> controller(std::in_place, recording(), out, port);
+  auto arguments = run_arguments(recording(), *controller, port, out);
+  arguments.insert(arguments.end(),
+                   {"--reference", recording().reference.string(), "--new-session-after", "0.5"});
+  ControllerProcess coprocessor(SAFECELL_PROGRAM, arguments, out / "safecell.log");
+  // The robot moving on the first program's session.
+  ASSERT_TRUE(wait_for_text(out / "safecell.log", "moving", 60s))
+      << read_text(out / "safecell.log");
+  const std::uint16_t listen_port = controller->listen_port();
+  controller->process().kill();
+  const fs::path second = folder("controller-restarted/second");
+  controller.emplace(recording(), second, port, listen_port);
+  EXPECT_TRUE(wait_for_text(out / "safecell.log", "opening a new session", 5s))
+      << read_text(out / "safecell.log");
+  EXPECT_TRUE(wait_for_text(out / "safecell.log", "session open again", 5s))
+      << read_text(out / "safecell.log") << "\nsecond controller:\n"
+      << read_text(second / "controller.log");
+  // The second program holds maps of the new session ("map v0" is none). It also latched the
+  // old session's frames as errors, so it keeps the robot held until its operator acknowledges.
+  std::this_thread::sleep_for(500ms);
+  const std::string second_log = read_text(second / "controller.log");
+  bool holds_a_map = false;
+  for (std::size_t at = second_log.find(" map v"); at != std::string::npos;
+       at = second_log.find(" map v", at + 1)) {
+    holds_a_map = holds_a_map || (at + 6 < second_log.size() && second_log[at + 6] != '0');
+  }
+  EXPECT_TRUE(holds_a_map) << second_log;
+  EXPECT_EQ(coprocessor.stop(5s), 0) << read_text(out / "safecell.log");
+  const auto summary = nlohmann::json::parse(read_text(out / "run_summary.json"));
+  EXPECT_EQ(summary["new_sessions"].get<int>(), 1) << summary.dump(2);
+  controller->process().stop(3s);
 }
 
 TEST_F(RunCommand, AReferenceImageOfTheWrongSizeIsNamed) {

@@ -106,6 +106,10 @@ void check_options(const RunOptions& options) {
     bad_option("--incident-seconds", std::to_string(options.incident_seconds),
                "0 (no incidents) or 0.1..60 s");
   }
+  if (!(options.new_session_after_s >= 0.1 && options.new_session_after_s <= 60.0)) {
+    bad_option("--new-session-after", std::to_string(options.new_session_after_s),
+               "seconds of silence from the controller, 0.1..60");
+  }
   if (!(options.connect_timeout_s > 0.0 && options.connect_timeout_s <= 3600.0)) {
     bad_option("--connect-timeout", std::to_string(options.connect_timeout_s), "s, up to 3600");
   }
@@ -187,6 +191,7 @@ struct RunFigures {
   std::size_t all_forbidden_cycles = 0;
   std::size_t cycles_short_of_views = 0;  // fewer known views than the camera threshold
   std::size_t incidents = 0;              // folders the incident recorder wrote
+  std::size_t new_sessions = 0;           // opened after the controller fell silent
   std::map<std::string, std::size_t> all_forbidden_because;  // cycles per reason
   std::vector<double> features_ms;
   std::vector<double> fusion_ms;
@@ -204,6 +209,7 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
   summary["fusion_ms_p99"] = percentile(figures.fusion_ms, 0.99);
   summary["controller_faults"] = link.controller_faults().size();
   summary["incidents"] = figures.incidents;
+  summary["new_sessions"] = figures.new_sessions;
   summary["stopped_because"] = stopped_because;
   write_file_atomically(file, summary.dump(2) + "\n");
 }
@@ -283,7 +289,9 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   }
   std::optional<JointRecord> last_joints;
   AppliedMapLatency latency;
+  std::uint64_t last_heard_ns = steady_now_ns();  // the controller's last joint state
   link.on_joint_state([&](const ReceivedJointState& received) {
+    last_heard_ns = steady_now_ns();
     if (received.coprocessor_time_ns == 0) return;
     JointRecord sample = joint_record(received, link.clock_sync(), start_ns);
     latency.joint_state(sample, last_joints ? &*last_joints : nullptr);
@@ -305,6 +313,18 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     if (options.seconds > 0.0 && seconds_since_start(steady_now_ns()) >= options.seconds) {
       stopped_because = "--seconds " + fixed(options.seconds, 1) + " ran out";
       break;
+    }
+    const double silent_s = static_cast<double>(steady_now_ns() - last_heard_ns) * 1e-9;
+    if (silent_s > options.new_session_after_s) {
+      err << "the controller has sent nothing for " << fixed(silent_s, 1)
+          << " s (restarted, or gone): opening a new session\n";
+      link.start_new_session();
+      if (!open_session(link, options, err)) {
+        stopped_because = *StopSignals::received();
+        break;
+      }
+      err << "session open again (" << ++figures.new_sessions << " since the start)\n";
+      last_heard_ns = steady_now_ns();
     }
     const Clock::time_point acquired_at = Clock::now();
     const FrameSet set = cameras.acquire();
@@ -423,6 +443,11 @@ void add_run_command(CLI::App& app, CommandLine& line) {
                    "How far apart the cameras' exposures may be, ms (hardware-triggered cameras: "
                    "a few; free-running ones up to a frame period, which widens the robot's "
                    "removal)")
+      ->capture_default_str();
+  run_command
+      ->add_option("--new-session-after", run->new_session_after_s,
+                   "Seconds without a word from the controller after which it counts as restarted "
+                   "(or gone) and a new session is opened")
       ->capture_default_str();
   run_command
       ->add_option("--connect-timeout", run->connect_timeout_s,

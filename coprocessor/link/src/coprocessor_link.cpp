@@ -117,6 +117,20 @@ void CoprocessorLink::open(std::chrono::milliseconds timeout) {
        std::uint64_t{config_.watchdog_us} * 1000});
 }
 
+void CoprocessorLink::start_new_session() {
+  session_id_ = random_session_id();
+  sealer_ = FrameSealer({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_});
+  checker_ =
+      FrameChecker({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_},
+                   kUnsyncedLimits, 0);
+  clock_sync_ = ClockSync();
+  publisher_ = MapPublisher(config_.cell_count, config_.publisher);
+  latch_ = ErrorLatch(config_.latch_window_ns);
+  accepted_ = false;
+  refused_because_.reset();
+  last_joint_state_.reset();
+}
+
 void CoprocessorLink::send_clock_echo() {
   v1::Message message;
   message.mutable_clock_echo()->set_echo_id(next_echo_id_++);

@@ -41,7 +41,7 @@ struct CampaignSettings {
   double fault_s = 1.5;    // the fault
   double recover_s = 4.0;  // after it: the operator's acknowledgement, and motion again
   double fps = 30.0;
-  double link_fault_rate = 0.2;  // per datagram, for the faults injected at a rate
+  double link_fault_rate = 0.3;  // per datagram, for the faults injected at a rate
   std::uint64_t seed = 1;
   std::filesystem::path folder;              // a folder per trial: controller files and trace
   std::filesystem::path controller_program;  // safecell-controller

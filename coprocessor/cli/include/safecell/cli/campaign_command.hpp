@@ -17,7 +17,7 @@ struct CampaignOptions {
   double settle_s = 2.0;
   double fault_s = 1.5;
   double recover_s = 4.0;
-  double rate = 0.2;
+  double rate = 0.3;
   unsigned long long seed = 1;
   bool json = false;
   // The negative control: the controller's watchdog and data age limit (ms); 0: the campaign's.

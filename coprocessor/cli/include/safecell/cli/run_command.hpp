@@ -33,6 +33,9 @@ struct RunOptions {
   double fps = 30.0;                // the map rate announced in the handshake
   double sync_error_ms = 2.0;       // cameras exposed further apart make their view unknown
   double connect_timeout_s = 30.0;  // waiting for the controller's answer
+  // A controller silent this long (no joint state) has restarted or gone: a new session is
+  // opened (a restarted controller knows the old one no more and holds the robot meanwhile).
+  double new_session_after_s = 1.0;
 };
 
 // Returns 0 after a clean stop. Throws CellError, FileError, LutFileError, LinkSetupError

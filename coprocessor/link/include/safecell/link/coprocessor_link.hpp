@@ -59,6 +59,11 @@ class CoprocessorLink {
   // refuses (naming what differs) or does not answer within `timeout`.
   void open(std::chrono::milliseconds timeout);
 
+  // Forgets the session (a controller that restarted knows it no more): a new random session id,
+  // the sequence, clock offset, error latch and map versions from the start; open() again next.
+  // The joint-state handlers stay.
+  void start_new_session();
+
   // Sends this cycle's map, its data captured at `capture_ns` (coprocessor clock).
   MapUpdate send_map(const CellSet& map, std::uint64_t capture_ns, std::uint32_t healthy_cameras,
                      std::uint32_t camera_count);
