@@ -59,8 +59,9 @@ void check_setup(const Incident& incident, const fs::path& cell_path, const Cell
     throw InputError(cell_path.string() + ": its cameras are not the incident's");
   }
   if (grid.fingerprint() != incident.setup.grid_fingerprint) {
-    throw InputError(cell_path.string() + ": grid fingerprint " + fingerprint_hex(grid.fingerprint()) +
-                     ", the incident was recorded with " + fingerprint_hex(incident.setup.grid_fingerprint) +
+    throw InputError(cell_path.string() + ": grid fingerprint " +
+                     fingerprint_hex(grid.fingerprint()) + ", the incident was recorded with " +
+                     fingerprint_hex(incident.setup.grid_fingerprint) +
                      " (a file the cell names has changed: the robot?)");
   }
 }
