@@ -108,19 +108,24 @@ Recording record_cell(const fs::path& folder) {
 class Controller {
  public:
   Controller(const Recording& recording, const fs::path& folder, std::uint16_t coprocessor_port,
-             std::uint16_t listen_port = 0)
+             std::uint16_t listen_port = 0, bool start_now = true)
       : log_(folder / "controller.log"),
+        config_(folder / "controller.yaml"),
         listen_port_(listen_port != 0 ? listen_port : free_udp_port()) {
-    const fs::path config = folder / "controller.yaml";
+    const fs::path& config = config_;
     const test::CliRun written = test::safecell_cli(
         {"controller", "config", "--cell", recording.cell_file.string(), "--lut-cache",
          recording.cache.string(), "--listen", address(), "--coprocessor",
          "127.0.0.1:" + std::to_string(coprocessor_port), "--out", config.string()});
     EXPECT_EQ(written.exit_code, 0) << written.err;
     EXPECT_NE(written.out.find("wrote " + config.string()), std::string::npos) << written.out;
+    if (start_now) start();
+  }
+  // The program (when the constructor was told not to start it).
+  void start() {
     process_ = std::make_unique<ControllerProcess>(
         find_controller_program(""),
-        std::vector<std::string>{"--config", config.string(), "--status-hz", "10"}, log_);
+        std::vector<std::string>{"--config", config_.string(), "--status-hz", "10"}, log_);
   }
   [[nodiscard]] std::string address() const { return "127.0.0.1:" + std::to_string(listen_port_); }
   [[nodiscard]] const fs::path& log() const { return log_; }
@@ -129,6 +134,7 @@ class Controller {
 
  private:
   fs::path log_;
+  fs::path config_;
   std::uint16_t listen_port_ = 0;
   std::unique_ptr<ControllerProcess> process_;
 };
@@ -200,8 +206,10 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
   }
   const auto summary = nlohmann::json::parse(read_text(out / "run_summary.json"));
   // Every set after the reference's five went through the pipeline to the controller, all four
-  // views known.
-  EXPECT_EQ(summary["cycles"].get<int>(), kSets - 5) << summary.dump(2);
+  // views known, but for those long due when the session opened: passed over, as a live
+  // camera's would have been.
+  EXPECT_LE(summary["cycles"].get<int>(), kSets - 5) << summary.dump(2);
+  EXPECT_GE(summary["cycles"].get<int>(), kSets - 5 - 15) << summary.dump(2);
   EXPECT_EQ(summary["cycles_short_of_views"].get<int>(), 0);
   // Most cycles found the robot's pose at their exposure (replayed exposures on the clock of the
   // joint stream); on a loaded machine a late joint stream makes some cycles all forbidden, as
@@ -328,18 +336,20 @@ TEST_F(RunCommand, ARestartedControllerGetsANewSession) {
   // maps. Without that the robot would stay held until safecell run was restarted by hand.
   const fs::path out = folder("controller-restarted");
   const std::uint16_t port = free_udp_port();
-  std::optional<Controller> controller(std::in_place, recording(), out, port);
-  auto arguments = run_arguments(recording(), *controller, port, out);
+  Controller controller(recording(), out, port);
+  auto arguments = run_arguments(recording(), controller, port, out);
   arguments.insert(arguments.end(),
-                   {"--reference", recording().reference.string(), "--new-session-after", "0.5"});
+                   {"--reference", recording().reference.string(), "--new-session-after", "0.3"});
   ControllerProcess coprocessor(SAFECELL_PROGRAM, arguments, out / "safecell.log");
-  // The robot moving on the first program's session.
-  ASSERT_TRUE(wait_for_text(out / "safecell.log", "moving", 60s))
+  // The first program's session open (the recording lasts 4 s: the restart comes early in it).
+  ASSERT_TRUE(wait_for_text(out / "safecell.log", "session open:", 60s))
       << read_text(out / "safecell.log");
-  const std::uint16_t listen_port = controller->listen_port();
-  controller->process().kill();
+  // The second program's configuration is written first (it loads the tables), so that the
+  // restart itself takes a moment, as a real one would.
   const fs::path second = folder("controller-restarted/second");
-  controller.emplace(recording(), second, port, listen_port);
+  Controller restarted(recording(), second, port, controller.listen_port(), false);
+  controller.process().kill();
+  restarted.start();
   EXPECT_TRUE(wait_for_text(out / "safecell.log", "opening a new session", 5s))
       << read_text(out / "safecell.log");
   EXPECT_TRUE(wait_for_text(out / "safecell.log", "session open again", 5s))
@@ -354,11 +364,11 @@ TEST_F(RunCommand, ARestartedControllerGetsANewSession) {
        at = second_log.find(" map v", at + 1)) {
     holds_a_map = holds_a_map || (at + 6 < second_log.size() && second_log[at + 6] != '0');
   }
-  EXPECT_TRUE(holds_a_map) << second_log;
+  EXPECT_TRUE(holds_a_map) << second_log << "\nsafecell run:\n" << read_text(out / "safecell.log");
   EXPECT_EQ(coprocessor.stop(5s), 0) << read_text(out / "safecell.log");
   const auto summary = nlohmann::json::parse(read_text(out / "run_summary.json"));
   EXPECT_EQ(summary["new_sessions"].get<int>(), 1) << summary.dump(2);
-  controller->process().stop(3s);
+  restarted.process().stop(3s);
 }
 
 TEST_F(RunCommand, AReferenceImageOfTheWrongSizeIsNamed) {

@@ -20,6 +20,15 @@ double ReplayClock::due_s(double recorded_s) {
   return recorded_s + *steady_minus_recorded_s_;
 }
 
+double ReplayClock::pass_over_before_s(double late_limit_s) {
+  const double now_s = steady_now_s();
+  if (taken_at_s_ < 0.0 || now_s - taken_at_s_ > kSameSet_s) {
+    pass_over_before_s_ = now_s - late_limit_s;
+    taken_at_s_ = now_s;
+  }
+  return pass_over_before_s_;
+}
+
 LiveReplaySource::LiveReplaySource(std::unique_ptr<CameraSource> recording,
                                    std::shared_ptr<ReplayClock> clock)
     : recording_(std::move(recording)), clock_(std::move(clock)) {
@@ -35,7 +44,19 @@ HealthReport LiveReplaySource::retrieve(SourceFrame& frame) {
     frame.exposure_s = steady_now_s();
     return report;
   }
-  const double due_s = clock_->due_s(*frame.exposure_s);
+  double due_s = clock_->due_s(*frame.exposure_s);
+  // Behind (the service stalled, waiting for a controller): a live camera would show a newer
+  // frame by now, so the frames long due are passed over, as it would have overwritten them.
+  // Handing them out would send maps of data older than the controller accepts, for ever after.
+  const double pass_over_before_s = clock_->pass_over_before_s(kLateLimit_s);
+  while (due_s < pass_over_before_s) {
+    if (!recording_->grab().healthy()) break;  // the recording's end: this frame, late
+    SourceFrame next;
+    if (!recording_->retrieve(next).healthy() || !next.exposure_s) break;
+    frame = std::move(next);
+    due_s = clock_->due_s(*frame.exposure_s);
+    ++passed_over_;
+  }
   std::this_thread::sleep_until(Steady::time_point(
       std::chrono::duration_cast<Steady::duration>(std::chrono::duration<double>(due_s))));
   frame.exposure_s = due_s;

@@ -255,10 +255,15 @@ class Trial {
         log_ << "  " << to_string(fault_) << ": fault off\n";
         phase = Phase::kAfter;
       }
-      // The operator: once the fault is over, what latched is acknowledged (SIGUSR1).
-      if (phase == Phase::kAfter && last_state_ == v1::CONTROLLER_STATE_FAULT &&
-          now - last_acknowledgement >= std::chrono::milliseconds(500) &&
-          now >= fault_end + std::chrono::milliseconds(300)) {
+      // The operator acknowledges what latched (SIGUSR1): before the fault (a late cycle on a
+      // loaded machine trips the cycle's watchdog; the trial needs the robot working when the
+      // fault begins), and once the fault is over; never while it lasts, which is what the
+      // trial watches.
+      const bool operator_on_duty =
+          phase == Phase::kBefore ||
+          (phase == Phase::kAfter && now >= fault_end + std::chrono::milliseconds(300));
+      if (operator_on_duty && last_state_ == v1::CONTROLLER_STATE_FAULT &&
+          now - last_acknowledgement >= std::chrono::milliseconds(500)) {
         session().process().acknowledge_fault();
         last_acknowledgement = now;
       }

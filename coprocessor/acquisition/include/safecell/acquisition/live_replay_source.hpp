@@ -6,6 +6,7 @@
 // one recording share a ReplayClock, so their frames keep their recorded offsets to each other.
 // Thread context: the acquisition thread; not synchronised.
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,9 +20,17 @@ class ReplayClock {
   // The steady-clock time (seconds since its epoch) at which a frame recorded at `recorded_s`
   // (the recording's clock) is due. The first call ties the recording's clock to now.
   double due_s(double recorded_s);
+  // Frames due before this steady-clock time are passed over (now - late_limit_s). Taken once
+  // for all the cameras of a frame set: retrieves within kSameSet_s of the last taking share it,
+  // so that the cameras pass over the same frames and stay in step.
+  double pass_over_before_s(double late_limit_s);
+
+  static constexpr double kSameSet_s = 0.05;
 
  private:
   std::optional<double> steady_minus_recorded_s_;
+  double pass_over_before_s_ = 0.0;
+  double taken_at_s_ = -1.0;
 };
 
 class LiveReplaySource final : public CameraSource {
@@ -34,12 +43,20 @@ class LiveReplaySource final : public CameraSource {
 
   HealthReport grab() override { return recording_->grab(); }
   // The recording's frame, after waiting until it is due; its exposure is then the due time on
-  // the steady clock. A frame without a recorded time is handed out at once, stamped now.
+  // the steady clock. A frame without a recorded time is handed out at once, stamped now. Frames
+  // due more than kLateLimit_s ago are passed over for the first one that is not (a live camera
+  // keeps only its newest frame); the cameras of one recording pass over the same ones, as their
+  // due times are the same.
   HealthReport retrieve(SourceFrame& frame) override;
+
+  static constexpr double kLateLimit_s = 0.1;
+  // Frames passed over so far.
+  [[nodiscard]] std::size_t passed_over() const { return passed_over_; }
 
  private:
   std::unique_ptr<CameraSource> recording_;
   std::shared_ptr<ReplayClock> clock_;
+  std::size_t passed_over_ = 0;
 };
 
 }  // namespace safecell
