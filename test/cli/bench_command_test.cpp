@@ -47,11 +47,11 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   const int frames = report["e2e_frames"].get<int>();
   EXPECT_LE(report["e2e_all_forbidden_frames"].get<int>() * 10, frames) << "of " << frames;
   EXPECT_TRUE(report.contains("e2e_updates_not_applied"));
-  // Latency is measured on the controller's clock, "to sent" on the coprocessor's; the clock
-  // offset estimate is good to well within a millisecond (a clean-clone ASan run had them
-  // 0.14 ms the wrong way round).
-  EXPECT_GE(report["e2e_latency_p50_ms"].get<double>() + 1.0,
-            report["e2e_to_sent_p50_ms"].get<double>());
+  // Latency is measured on the controller's clock, "sent" on the coprocessor's; no map may be
+  // applied before it was sent, within the clock offset estimate's error (well under a
+  // millisecond). Update by update: the p50s of all frames sent and of the frames applied are of
+  // different sets, and a clean-clone ASan run had them 0.1 ms the wrong way round.
+  EXPECT_GE(report["e2e_sent_to_applied_min_ms"].get<double>(), -1.0);
   EXPECT_GE(report["e2e_latency_p99_ms"].get<double>(), report["e2e_latency_p50_ms"].get<double>());
 }
 

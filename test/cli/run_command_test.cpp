@@ -340,14 +340,14 @@ TEST_F(RunCommand, ARestartedControllerGetsANewSession) {
   auto arguments = run_arguments(recording(), controller, port, out);
   arguments.insert(arguments.end(),
                    {"--reference", recording().reference.string(), "--new-session-after", "0.3"});
+  // The second program's configuration is written before the run starts: writing it loads the
+  // tables, which under the sanitizers takes longer than the 4 s recording lasts.
+  const fs::path second = folder("controller-restarted/second");
+  Controller restarted(recording(), second, port, controller.listen_port(), false);
   ControllerProcess coprocessor(SAFECELL_PROGRAM, arguments, out / "safecell.log");
   // The first program's session open (the recording lasts 4 s: the restart comes early in it).
   ASSERT_TRUE(wait_for_text(out / "safecell.log", "session open:", 60s))
       << read_text(out / "safecell.log");
-  // The second program's configuration is written first (it loads the tables), so that the
-  // restart itself takes a moment, as a real one would.
-  const fs::path second = folder("controller-restarted/second");
-  Controller restarted(recording(), second, port, controller.listen_port(), false);
   controller.process().kill();
   restarted.start();
   EXPECT_TRUE(wait_for_text(out / "safecell.log", "opening a new session", 5s))

@@ -19,6 +19,10 @@ struct EndToEndFigures {
   double to_sent_p50_ms = 0.0;  // exposure -> the update's last frame sent (the pipeline)
   double to_sent_p99_ms = 0.0;
   std::size_t updates_not_applied = 0;  // of those frames, maps the controller never held
+  // Over the updates applied: the least of (applied in the controller - last frame sent), the
+  // controller's clock brought onto the coprocessor's. Below 0 by more than the clock offset's
+  // error means a map was applied before it was sent: the latency figures would be wrong.
+  double sent_to_applied_min_ms = 0.0;
   // Frames whose map was all forbidden (the robot's pose unknown): must be 0, or the figures
   // measured a shortcut, not the pipeline.
   std::size_t all_forbidden_frames = 0;
