@@ -22,6 +22,7 @@ constexpr const char* kTrace =
 {"e":"stop_request","t":350,"cause":"operator"}
 {"e":"acknowledged","t":400}
 {"e":"stop_request_cleared","t":400}
+{"e":"cycle","t":450,"state":"moving","fault":"none","link":"none","scale":null,"map":1,"speed":null}
 )";
 
 TEST(ControllerTrace, EveryEventIsReadBack) {
@@ -29,10 +30,12 @@ TEST(ControllerTrace, EveryEventIsReadBack) {
   const auto file = scratch.path() / "trace.jsonl";
   std::ofstream(file) << kTrace;
   const ControllerTrace trace = read_controller_trace(file);
-  ASSERT_EQ(trace.cycles.size(), 2U);
+  ASSERT_EQ(trace.cycles.size(), 3U);
   EXPECT_EQ(trace.cycles[0].link, "no session");
   EXPECT_FALSE(trace.cycles[0].commands_motion());
   EXPECT_TRUE(trace.cycles[1].commands_motion());
+  // A scale the controller could not state is not a hold.
+  EXPECT_TRUE(trace.cycles[2].commands_motion());
   EXPECT_DOUBLE_EQ(trace.cycles[1].scale, 0.84);
   EXPECT_EQ(trace.cycles[1].session, 0xFFU);
   ASSERT_EQ(trace.maps.size(), 1U);
@@ -51,7 +54,7 @@ TEST(ControllerTrace, ALastLineCutShortByAKillIsLeftOut) {
   const test::ScratchFolder scratch("trace");
   const auto file = scratch.path() / "trace.jsonl";
   std::ofstream(file) << kTrace << R"({"e":"cycle","t":500,"state":"mov)";
-  EXPECT_EQ(read_controller_trace(file).cycles.size(), 2U);
+  EXPECT_EQ(read_controller_trace(file).cycles.size(), 3U);
 }
 
 TEST(ControllerTrace, ABrokenLineIsNamed) {

@@ -155,6 +155,38 @@ TEST(TrialChecks, AFaultAtARateMustLatch) {
   EXPECT_NE(failures_of(result).find("too few to latch"), std::string::npos) << failures_of(result);
 }
 
+// A fault that meets a robot already held shows nothing about the stop: the trial fails.
+TEST(TrialChecks, ARobotAlreadyHeldWhenTheFaultBeganFailsTheTrial) {
+  TrialRecord record = MadeUpTrial{}.record();
+  for (TraceCycle& cycle : record.traces[0].cycles) {
+    if (cycle.t_ns + 60 * kMs >= record.fault_begin_ns && cycle.t_ns < record.fault_begin_ns) {
+      cycle.scale = 0.0;
+      cycle.state = "fault";
+    }
+  }
+  const TrialResult result = check_trial(record, TrialBounds{});
+  EXPECT_NE(failures_of(result).find("not moving when the fault began (state fault)"),
+            std::string::npos)
+      << failures_of(result);
+}
+
+// The restarted program knows no session: a map of the session before the restart that it
+// holds is caught; one of a new session is not.
+TEST(TrialChecks, ARestartedControllerHoldingAMapOfTheOldSessionIsCaught) {
+  MadeUpTrial made_up;
+  made_up.fault = FaultClass::kControllerRestarted;
+  TrialRecord record = made_up.record();
+  ControllerTrace second;
+  second.maps.push_back({4000 * kMs, kSession, 90, 90 * 7919, 0});
+  record.traces.push_back(second);
+  const std::string caught = failures_of(check_trial(record, TrialBounds{}));
+  EXPECT_NE(caught.find("of the session before the restart"), std::string::npos) << caught;
+  record.traces[1].maps[0].session = kSession + 1;
+  const std::string new_session = failures_of(check_trial(record, TrialBounds{}));
+  EXPECT_EQ(new_session.find("of the session before the restart"), std::string::npos)
+      << new_session;
+}
+
 TEST(TrialChecks, TheWrongFingerprintMustBeRefusedAndTheRobotNeverMove) {
   TrialRecord record;
   record.fault = FaultClass::kWrongFingerprint;

@@ -13,6 +13,7 @@
 
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/cspace/cell_bits.hpp"
+#include "safecell/cspace/map_chunk.hpp"
 #include "safecell/cspace/map_hash.hpp"
 #include "safecell/protocol/nanopb_codec.hpp"
 #include "scripted_coprocessor.hpp"
@@ -172,6 +173,68 @@ TEST_F(ControllerLinkTest, AChunkOfAnUnknownKindIsRefusedAsCorruption) {
   EXPECT_EQ(link_.latch().count(LinkError::kCorruption), errors + 1);
   EXPECT_EQ(store_.store().version(), 1u);
   EXPECT_EQ(held(), first);
+}
+
+// A keyframe of `map` in one chunk, sealed, whose hash was bound to `bound_healthy` cameras and
+// which says `healthy` (they differ when a fault behind a valid CRC changed the count).
+Bytes keyframe_saying(ScriptedCoprocessor& sender, const std::vector<std::uint64_t>& map,
+                      std::uint64_t version, std::uint32_t bound_healthy, std::uint32_t healthy,
+                      std::uint64_t now) {
+  safecell_v1_Message message = safecell_v1_Message_init_zero;
+  message.which_body = safecell_v1_Message_map_chunk_tag;
+  safecell_v1_MapChunk& chunk = message.body.map_chunk;
+  chunk.kind = safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
+  chunk.map_version = version;
+  chunk.map_hash = map_hash_with_cameras(map_hash(map.data(), kCells), bound_healthy, 4);
+  chunk.chunk_count = 1;
+  std::size_t size = 0;
+  chunk.end_cell = encode_keyframe_chunk(map.data(), kCells, 0, chunk.runs.bytes,
+                                         sizeof(chunk.runs.bytes), size);
+  chunk.runs.size = static_cast<pb_size_t>(size);
+  chunk.healthy_cameras = healthy;
+  chunk.camera_count = 4;
+  Bytes payload(kMaxPayloadBytes);
+  const Result<std::size_t> encoded = encode_message(message, payload.data(), payload.size());
+  EXPECT_TRUE(encoded.ok());
+  payload.resize(encoded.ok() ? encoded.value() : 0);
+  return sender.seal_payload(payload, now - kMs, now);
+}
+
+// The camera counts a map was fused from are bound into its hash: a count raised behind a valid
+// CRC (a corrupted encode buffer, sealed again) is refused like a changed cell, and the honest
+// count of the same map is taken. A status report can lower the count, never raise it.
+TEST_F(ControllerLinkTest, ACameraCountChangedBehindTheCrcIsRefused) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  const auto first = map_with(100, 900);
+  deliver(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  ASSERT_EQ(store_.store().version(), 1u);
+  ASSERT_EQ(link_.healthy_cameras(), 4u);
+
+  const auto second = map_with(2000, 2600);
+  deliver(keyframe_saying(coprocessor_, second, 2, 1, 4, 30 * kMs), 31 * kMs);
+  EXPECT_EQ(store_.store().version(), 1u);
+  EXPECT_EQ(link_.hash_mismatches(), 1u);
+  EXPECT_EQ(link_.healthy_cameras(), 4u);
+  EXPECT_EQ(held(), first);
+
+  // The control: the same map with the count it was bound to.
+  deliver(keyframe_saying(coprocessor_, second, 3, 1, 1, 40 * kMs), 41 * kMs);
+  EXPECT_EQ(store_.store().version(), 3u);
+  EXPECT_EQ(link_.healthy_cameras(), 1u);
+  EXPECT_EQ(held(), second);
+
+  for (const std::uint32_t reported : {4u, 0u}) {
+    safecell_v1_Message message = safecell_v1_Message_init_zero;
+    message.which_body = safecell_v1_Message_status_report_tag;
+    message.body.status_report.healthy_cameras = reported;
+    message.body.status_report.camera_count = 4;
+    Bytes payload(kMaxPayloadBytes);
+    const Result<std::size_t> encoded = encode_message(message, payload.data(), payload.size());
+    ASSERT_TRUE(encoded.ok());
+    payload.resize(encoded.value());
+    deliver(coprocessor_.seal_payload(payload, 49 * kMs, 50 * kMs), 51 * kMs);
+    EXPECT_EQ(link_.healthy_cameras(), reported == 0 ? 0u : 1u) << "a report of " << reported;
+  }
 }
 
 TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {

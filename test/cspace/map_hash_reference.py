@@ -36,6 +36,12 @@ def map_hash(cells, cell_count):
     return mix(mix(cell_count) ^ combined)
 
 
+def map_hash_with_cameras(hash_value, healthy_cameras, camera_count):
+    """The hash a map chunk carries: the map hash bound to the camera counts."""
+    counts = (healthy_cameras << 32) | camera_count
+    return hash_value ^ mix(mix(counts ^ 0x9E3779B97F4A7C15))
+
+
 VECTORS = [
     ("one free cell", set(), 1),
     ("100 cells: 0, 5..9, 99", {0, 5, 6, 7, 8, 9, 99}, 100),
@@ -47,3 +53,6 @@ VECTORS = [
 if __name__ == "__main__":
     for name, cells, count in VECTORS:
         print(f"{name}: 0x{map_hash(cells, count):016X}")
+    for healthy, count in [(4, 4), (3, 4), (0, 0)]:
+        bound = map_hash_with_cameras(map_hash(set(), 1), healthy, count)
+        print(f"one free cell, {healthy} of {count} cameras: 0x{bound:016X}")

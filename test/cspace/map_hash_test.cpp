@@ -85,5 +85,16 @@ TEST(MapHash, RefreshingTheTouchedBlocksEqualsAFullRecomputation) {
   }
 }
 
+// The chunk's hash binds the camera counts (vectors from map_hash_reference.py); binding twice
+// takes it off again, which is how the receiver checks it.
+TEST(MapHash, TheCameraCountsAreBoundIntoTheChunksHash) {
+  const Words one(1, 0);
+  const std::uint64_t hash = map_hash(one.data(), 1);
+  EXPECT_EQ(map_hash_with_cameras(hash, 4, 4), 0x01E6F9CAAC04CAD1ull);
+  EXPECT_EQ(map_hash_with_cameras(hash, 3, 4), 0xBFFB77FEF6B1808Dull);
+  EXPECT_EQ(map_hash_with_cameras(hash, 0, 0), 0xA37D4B9C84974469ull);
+  EXPECT_EQ(map_hash_with_cameras(map_hash_with_cameras(hash, 3, 4), 3, 4), hash);
+}
+
 }  // namespace
 }  // namespace safecell

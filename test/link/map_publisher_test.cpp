@@ -28,7 +28,8 @@ MapChunkHeader header_of(const v1::MapChunk& chunk) {
       chunk.kind() == v1::MAP_UPDATE_KIND_DELTA ? MapChunkKind::kDelta : MapChunkKind::kKeyframe;
   header.map_version = chunk.map_version();
   header.base_version = chunk.base_version();
-  header.map_hash = chunk.map_hash();
+  header.map_hash =
+      map_hash_with_cameras(chunk.map_hash(), chunk.healthy_cameras(), chunk.camera_count());
   header.chunk_index = chunk.chunk_index();
   header.chunk_count = chunk.chunk_count();
   header.first_cell = chunk.first_cell();

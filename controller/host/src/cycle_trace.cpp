@@ -9,10 +9,15 @@
 namespace safecell {
 namespace {
 
-// Fixed-point text without the stream's locale or state: "0.842".
+// Fixed-point text without the stream's locale or state: "0.842"; null for a value that is not
+// finite (a reader must not take it for a number, least of all a speed scale of 0).
 void put_fixed(std::ostream& out, double value) {
+  if (!std::isfinite(value)) {
+    out << "null";
+    return;
+  }
   char text[32];
-  std::snprintf(text, sizeof text, "%.3f", std::isfinite(value) ? value : -1.0);
+  std::snprintf(text, sizeof text, "%.3f", value);
   out << text;
 }
 

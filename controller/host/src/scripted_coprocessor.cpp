@@ -7,6 +7,11 @@
 #include "safecell/protocol/nanopb_codec.hpp"
 
 namespace safecell {
+namespace {
+
+constexpr std::uint32_t kCameras = 4;  // the scripted cell's cameras, all of them healthy
+
+}  // namespace
 
 ScriptedCoprocessor::ScriptedCoprocessor(std::uint64_t grid_fingerprint,
                                          std::uint64_t lut_fingerprint, std::uint64_t session,
@@ -42,11 +47,12 @@ std::vector<ScriptedCoprocessor::Frame> ScriptedCoprocessor::update(
                                  : safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
     chunk.map_version = version;
     chunk.base_version = base != nullptr ? base_version : 0;
-    chunk.map_hash = map_hash(target, cells_) ^ (wrong_hash ? 1U : 0U);
+    chunk.map_hash = map_hash_with_cameras(map_hash(target, cells_), kCameras, kCameras) ^
+                     (wrong_hash ? 1U : 0U);
     chunk.chunk_index = static_cast<std::uint32_t>(chunks.size());
     chunk.first_cell = from;
-    chunk.healthy_cameras = 4;
-    chunk.camera_count = 4;
+    chunk.healthy_cameras = kCameras;
+    chunk.camera_count = kCameras;
     std::size_t size = 0;
     chunk.end_cell =
         base != nullptr

@@ -13,7 +13,10 @@ MapChunkHeader chunk_header_of(const safecell_v1_MapChunk& chunk) noexcept {
                     : MapChunkKind::kKeyframe;
   header.map_version = chunk.map_version;
   header.base_version = chunk.base_version;
-  header.map_hash = chunk.map_hash;
+  // The hash on the link binds the chunk's camera counts (map_hash.hpp); the store checks what
+  // is left against the map it rebuilt, so a changed count is refused like a changed cell.
+  header.map_hash =
+      map_hash_with_cameras(chunk.map_hash, chunk.healthy_cameras, chunk.camera_count);
   header.chunk_index = chunk.chunk_index;
   header.chunk_count = chunk.chunk_count;
   header.first_cell = chunk.first_cell;
@@ -226,7 +229,11 @@ void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns
       break;
     }
     case safecell_v1_Message_status_report_tag:
-      healthy_cameras_ = incoming_.body.status_report.healthy_cameras;
+      // A report can only lower the count: it is not bound to a map as a chunk's count is, so a
+      // report saying more cameras than the held map was fused from is not believed.
+      if (incoming_.body.status_report.healthy_cameras < healthy_cameras_) {
+        healthy_cameras_ = incoming_.body.status_report.healthy_cameras;
+      }
       break;
     default:  // heartbeats, and messages meant for the coprocessor: nothing to do
       break;

@@ -21,10 +21,9 @@ double ReplayClock::due_s(double recorded_s) {
 }
 
 double ReplayClock::pass_over_before_s(double late_limit_s) {
-  const double now_s = steady_now_s();
-  if (taken_at_s_ < 0.0 || now_s - taken_at_s_ > kSameSet_s) {
-    pass_over_before_s_ = now_s - late_limit_s;
-    taken_at_s_ = now_s;
+  if (!taken_) {
+    pass_over_before_s_ = steady_now_s() - late_limit_s;
+    taken_ = true;
   }
   return pass_over_before_s_;
 }
@@ -50,6 +49,7 @@ HealthReport LiveReplaySource::retrieve(SourceFrame& frame) {
   // Handing them out would send maps of data older than the controller accepts, for ever after.
   const double pass_over_before_s = clock_->pass_over_before_s(kLateLimit_s);
   while (due_s < pass_over_before_s) {
+    // The recording's own grab, not this source's: passing over stays within the frame set.
     if (!recording_->grab().healthy()) break;  // the recording's end: this frame, late
     SourceFrame next;
     if (!recording_->retrieve(next).healthy() || !next.exposure_s) break;

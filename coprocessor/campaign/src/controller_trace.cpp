@@ -1,6 +1,7 @@
 #include "safecell/campaign/controller_trace.hpp"
 
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "safecell/files/atomic_write.hpp"
@@ -12,6 +13,11 @@ std::uint64_t hex_field(const nlohmann::json& line, const char* field) {
   return std::stoull(line.at(field).get<std::string>(), nullptr, 16);
 }
 
+// A number, or null for one the controller could not state (not finite).
+double number_or_nan(const nlohmann::json& value) {
+  return value.is_null() ? std::numeric_limits<double>::quiet_NaN() : value.get<double>();
+}
+
 void add_event(ControllerTrace& trace, const nlohmann::json& line) {
   const std::string event = line.at("e").get<std::string>();
   const auto t = line.at("t").get<std::uint64_t>();
@@ -21,9 +27,9 @@ void add_event(ControllerTrace& trace, const nlohmann::json& line) {
     cycle.state = line.at("state").get<std::string>();
     cycle.fault = line.at("fault").get<std::string>();
     cycle.link = line.at("link").get<std::string>();
-    cycle.scale = line.at("scale").get<double>();
+    cycle.scale = number_or_nan(line.at("scale"));
     cycle.map_version = line.at("map").get<std::uint64_t>();
-    cycle.speed_rad_s = line.at("speed").get<double>();
+    cycle.speed_rad_s = number_or_nan(line.at("speed"));
     // The map events come before the cycle line they were seen in.
     if (!trace.maps.empty() && trace.maps.back().version == cycle.map_version) {
       cycle.session = trace.maps.back().session;

@@ -22,6 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+constexpr double kMovingGrace_s = 5.0;    // the most a trial waits past settle_s for motion
 constexpr double kLinkLimits_ms = 250.0;  // the watchdog and the maximum data age: the demo's
 
 std::uint64_t ns_of(Clock::time_point at) {
@@ -229,9 +230,13 @@ class Trial {
 
     const auto period = seconds(1.0 / settings_.fps);
     const Clock::time_point start = Clock::now();
-    const Clock::time_point fault_begin = start + seconds(settings_.settle_s);
-    const Clock::time_point fault_end = fault_begin + seconds(settings_.fault_s);
-    const Clock::time_point end = fault_end + seconds(settings_.recover_s);
+    // The fault begins after the settling time once the controller reports the robot moving (a
+    // fault that meets a robot already held would pass the stop check without showing anything);
+    // if it never moves, after a grace period, and the checks say so.
+    const Clock::time_point fault_due = start + seconds(settings_.settle_s);
+    const Clock::time_point fault_due_at_latest = fault_due + seconds(kMovingGrace_s);
+    Clock::time_point fault_end = Clock::time_point::max();
+    Clock::time_point end = Clock::time_point::max();
     enum class Phase { kBefore, kFault, kAfter } phase = Phase::kBefore;
     Clock::time_point last_acknowledgement{};
     std::int64_t k = 0;
@@ -244,9 +249,14 @@ class Trial {
         session().service().serve_link(exposure_at);
       }
       const Clock::time_point now = Clock::now();
-      if (phase == Phase::kBefore && now >= fault_begin) {
-        log_ << "  " << to_string(fault_) << ": fault on\n";
+      const bool moving =
+          last_state_ == v1::CONTROLLER_STATE_MOVING || last_state_ == v1::CONTROLLER_STATE_SLOWED;
+      if (phase == Phase::kBefore && now >= fault_due && (moving || now >= fault_due_at_latest)) {
+        log_ << "  " << to_string(fault_) << ": fault on"
+             << (moving ? "" : " (the robot is not moving: the trial will say so)") << "\n";
         record_.fault_begin_ns = ns_of(now);
+        fault_end = now + seconds(settings_.fault_s);
+        end = fault_end + seconds(settings_.recover_s);
         begin_fault();
         phase = Phase::kFault;
       } else if (phase == Phase::kFault && now >= fault_end) {
@@ -261,7 +271,7 @@ class Trial {
       // trial watches.
       const bool operator_on_duty =
           phase == Phase::kBefore ||
-          (phase == Phase::kAfter && now >= fault_end + std::chrono::milliseconds(300));
+          (phase == Phase::kAfter && now - fault_end >= std::chrono::milliseconds(300));
       if (operator_on_duty && last_state_ == v1::CONTROLLER_STATE_FAULT &&
           now - last_acknowledgement >= std::chrono::milliseconds(500)) {
         session().process().acknowledge_fault();
@@ -320,6 +330,7 @@ nlohmann::json json_of(const TrialResult& trial) {
                         {"stops", trial.stops},
                         {"maps_applied", trial.maps_applied},
                         {"wrong_maps_accepted", trial.wrong_maps},
+                        {"degraded_maps", trial.degraded_maps},
                         {"stale_motion_cycles", trial.stale_motion_cycles},
                         {"worst_moving_map_age_ms", trial.worst_moving_map_age_ms},
                         {"causes", trial.causes},

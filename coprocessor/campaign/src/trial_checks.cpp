@@ -30,7 +30,12 @@ void check_maps(const TrialRecord& record, TrialResult& result) {
       const auto sent = record.sent.find({map.session, map.version});
       const bool known = sent != record.sent.end();
       if (known && sent->second.hash == map.hash) continue;
-      if (known && map.degraded_blocks > 0) continue;  // more forbidden than sent: safe
+      if (known && map.degraded_blocks > 0) {
+        // More forbidden than was sent (the store ran out of room), so its hash differs: safe,
+        // but not checked cell by cell; counted so that a campaign full of them is seen.
+        ++result.degraded_maps;
+        continue;
+      }
       ++result.wrong_maps;
       if (first.empty()) {
         first = "version " + std::to_string(map.version) +
@@ -108,6 +113,16 @@ void collect_reactions(const TrialRecord& record, TrialResult& result) {
     }
   }
   if (record.refusal) note_cause(result.causes, "refused");
+}
+
+// The trace's last cycle before t_ns, if any.
+const TraceCycle* last_cycle_before(const ControllerTrace& trace, std::uint64_t t_ns) {
+  const TraceCycle* last = nullptr;
+  for (const TraceCycle& cycle : trace.cycles) {
+    if (cycle.t_ns >= t_ns) break;
+    last = &cycle;
+  }
+  return last;
 }
 
 bool moved_before(const ControllerTrace& trace, std::uint64_t t_ns) {
@@ -205,11 +220,17 @@ TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds) {
     }
     return result;
   }
-  if (!moved_before(record.traces.front(), record.fault_begin_ns)) {
-    result.failures.emplace_back("the robot never moved before the fault: the trial shows nothing");
+  // A robot already held when the fault began would pass the stop check without showing anything.
+  const TraceCycle* before = last_cycle_before(record.traces.front(), record.fault_begin_ns);
+  if (before == nullptr || !before->commands_motion()) {
+    result.failures.emplace_back(
+        "the robot was not moving when the fault began (" +
+        (before == nullptr ? std::string("no cycle before it") : "state " + before->state) +
+        "): the trial shows nothing");
   }
   if (record.fault == FaultClass::kControllerRestarted) {
-    // The first program was killed; the second must not move before a map of a session.
+    // The first program was killed; the second must not move before it holds a map, and every
+    // map it holds must be of a session opened after the restart (it knows no older one).
     if (record.traces.size() < 2) {
       result.failures.emplace_back("no trace of the restarted controller");
     } else {
@@ -217,6 +238,17 @@ TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds) {
       const std::uint64_t first_map = second.maps.empty() ? UINT64_MAX : second.maps.front().t_ns;
       if (moved_before(second, first_map)) {
         result.failures.emplace_back("the restarted controller moved before it held a map");
+      }
+      for (const TraceMap& map : second.maps) {
+        const bool old_session =
+            std::any_of(record.traces.front().maps.begin(), record.traces.front().maps.end(),
+                        [&map](const TraceMap& old) { return old.session == map.session; });
+        if (old_session) {
+          result.failures.emplace_back("the restarted controller took map version " +
+                                       std::to_string(map.version) +
+                                       " of the session before the restart");
+          break;
+        }
       }
       result.stop_ms = 0.0;  // the program's end
     }

@@ -147,7 +147,7 @@ class StopRequestOnError {
  public:
   explicit StopRequestOnError(CoprocessorLink& link) : link_(link) {}
   ~StopRequestOnError() {
-    if (sent_) return;
+    if (sent_ || !link_.clock_sync().offset()) return;
     try {
       link_.send_stop_request(v1::FAULT_CAUSE_OPERATOR, "safecell run ended by an error");
     } catch (...) {  // NOLINT(bugprone-empty-catch): nothing more can be done on the way out
@@ -155,9 +155,13 @@ class StopRequestOnError {
   }
   StopRequestOnError(const StopRequestOnError&) = delete;
   StopRequestOnError& operator=(const StopRequestOnError&) = delete;
-  void send(const std::string& why) {
+  // False when no session is open (a signal came while a new one was being opened): there is
+  // nobody to ask, and the controller's watchdog holds the robot.
+  bool send(const std::string& why) {
     sent_ = true;
+    if (!link_.clock_sync().offset()) return false;
     link_.send_stop_request(v1::FAULT_CAUSE_OPERATOR, why);
+    return true;
   }
 
  private:
@@ -314,6 +318,8 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       stopped_because = "--seconds " + fixed(options.seconds, 1) + " ran out";
       break;
     }
+    // What is waiting in the socket first: a slow cycle is not the controller's silence.
+    service.serve_link(Clock::now());
     const double silent_s = static_cast<double>(steady_now_ns() - last_heard_ns) * 1e-9;
     if (silent_s > options.new_session_after_s) {
       err << "the controller has sent nothing for " << fixed(silent_s, 1)
@@ -374,12 +380,14 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
 
   // A clean stop: the controller holds the robot on the request (latched until its operator
   // acknowledges) instead of finding the maps gone.
-  stop_request.send("safecell run stopped: " + stopped_because);
-  service.serve_link(Clock::now() + std::chrono::milliseconds(50));
+  const bool asked = stop_request.send("safecell run stopped: " + stopped_because);
+  if (asked) service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
   if (incidents) figures.incidents = incidents->finish();
   write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, link);
-  out << "stopped: " << stopped_because << "; the controller was asked to stop the robot\n"
+  out << "stopped: " << stopped_because
+      << (asked ? "; the controller was asked to stop the robot\n"
+                : "; no session was open to ask the controller (its watchdog holds the robot)\n")
       << "cycles " << figures.cycles << " in " << fixed(seconds, 1) << " s, all-forbidden "
       << figures.all_forbidden_cycles << ", short of views " << figures.cycles_short_of_views
       << "; summary " << (out_dir / "run_summary.json").string() << '\n';

@@ -65,7 +65,7 @@ MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_camera
     chunk.set_kind(keyframe ? v1::MAP_UPDATE_KIND_KEYFRAME : v1::MAP_UPDATE_KIND_DELTA);
     chunk.set_map_version(update.version);
     chunk.set_base_version(keyframe ? 0 : acknowledged_);
-    chunk.set_map_hash(update.hash);
+    chunk.set_map_hash(map_hash_with_cameras(update.hash, healthy_cameras, camera_count));
     chunk.set_chunk_index(static_cast<std::uint32_t>(update.chunks.size() - 1));
     chunk.set_first_cell(from);
     chunk.set_end_cell(end);

@@ -20,17 +20,17 @@ class ReplayClock {
   // The steady-clock time (seconds since its epoch) at which a frame recorded at `recorded_s`
   // (the recording's clock) is due. The first call ties the recording's clock to now.
   double due_s(double recorded_s);
+  // A frame set begins (a camera's grab(): a set grabs every camera before it retrieves any).
+  void new_set() { taken_ = false; }
   // Frames due before this steady-clock time are passed over (now - late_limit_s). Taken once
-  // for all the cameras of a frame set: retrieves within kSameSet_s of the last taking share it,
-  // so that the cameras pass over the same frames and stay in step.
+  // per frame set, by its first retrieve, so that every camera passes over the same frames and
+  // they stay in step however long the first one took to pass over its own.
   double pass_over_before_s(double late_limit_s);
-
-  static constexpr double kSameSet_s = 0.05;
 
  private:
   std::optional<double> steady_minus_recorded_s_;
   double pass_over_before_s_ = 0.0;
-  double taken_at_s_ = -1.0;
+  bool taken_ = false;
 };
 
 class LiveReplaySource final : public CameraSource {
@@ -41,7 +41,10 @@ class LiveReplaySource final : public CameraSource {
   [[nodiscard]] const std::string& name() const override { return recording_->name(); }
   [[nodiscard]] cv::Size frame_size() const override { return recording_->frame_size(); }
 
-  HealthReport grab() override { return recording_->grab(); }
+  HealthReport grab() override {
+    clock_->new_set();
+    return recording_->grab();
+  }
   // The recording's frame, after waiting until it is due; its exposure is then the due time on
   // the steady clock. A frame without a recorded time is handed out at once, stamped now. Frames
   // due more than kLateLimit_s ago are passed over for the first one that is not (a live camera

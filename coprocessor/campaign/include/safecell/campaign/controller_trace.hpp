@@ -20,7 +20,8 @@ struct TraceCycle {
   std::uint64_t map_version = 0;  // the held map's (0: none)
   std::uint64_t session = 0;      // the session of the held map (0: none)
   double speed_rad_s = 0.0;       // the robot's fastest joint
-  [[nodiscard]] bool commands_motion() const { return scale > 0.0; }
+  // A scale the controller could not state (written as null: not finite) counts as motion.
+  [[nodiscard]] bool commands_motion() const { return !(scale <= 0.0); }
 };
 
 struct TraceMap {

@@ -60,6 +60,7 @@ struct TrialResult {
   std::optional<double> stop_ms;   // the first hold, from the fault's start
   std::uint64_t maps_applied = 0;
   std::uint64_t wrong_maps = 0;
+  std::uint64_t degraded_maps = 0;  // applied with degraded blocks: not compared by hash
   std::uint64_t stale_motion_cycles = 0;
   double worst_moving_map_age_ms = 0.0;
   std::optional<double> recovered_s;  // motion again, from the fault's end

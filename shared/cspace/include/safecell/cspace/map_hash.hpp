@@ -40,6 +40,17 @@ constexpr std::uint64_t map_hash_mix(std::uint64_t x) noexcept {
 constexpr std::uint64_t map_block_hash_seed(std::uint32_t block) noexcept {
   return map_hash_mix(std::uint64_t{block} + 1);
 }
+// The hash a map chunk carries on the link (MapChunk.map_hash): the map hash bound to the camera
+// counts the map was fused from, so that a fault behind a valid CRC that changes them (a
+// corrupted encode buffer, resealed) is refused as a wrong map, never taken as more healthy
+// cameras than there were. The binding is an XOR with a mixed key of both counts, so the same
+// call takes it off again: the receiver compares map_hash_with_cameras(chunk's hash, chunk's
+// counts) with the hash of the map it rebuilt.
+constexpr std::uint64_t map_hash_with_cameras(std::uint64_t hash, std::uint32_t healthy_cameras,
+                                              std::uint32_t camera_count) noexcept {
+  const std::uint64_t counts = (std::uint64_t{healthy_cameras} << 32) | camera_count;
+  return hash ^ map_hash_mix(map_hash_mix(counts ^ 0x9E3779B97F4A7C15ull));
+}
 // The map hash from the XOR of all its block hashes.
 constexpr std::uint64_t map_hash_from_combined(std::uint64_t combined_block_hashes,
                                                CellIndex cell_count) noexcept {

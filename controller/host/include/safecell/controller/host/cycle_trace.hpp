@@ -13,13 +13,13 @@
 //
 // t: the controller's monotonic clock in ns (CLOCK_MONOTONIC: on one machine the coprocessor's
 // std::chrono::steady_clock, so a campaign can line its own events up with these). speed: the
-// robot's fastest joint, rad/s, as read this cycle. The map line's hash is computed here from the
-// held map's cells (map_hash.hpp over MapView::copy_dense), not copied from the update, so a
-// campaign can compare what the controller holds with what the coprocessor sent; a store with
-// degraded blocks holds more forbidden cells than were sent and hashes differently.
-// Thread context: the cycle's thread. Hosted code: it writes to a buffered stream and keeps a
-// dense copy of the map (allocated once); flushed every 50 ms (a killed program loses at most
-// that much) and by flush().
+// robot's fastest joint, rad/s, as read this cycle; scale and speed are null when not finite. The
+// map line's hash is computed here from the held map's cells (map_hash.hpp over
+// MapView::copy_dense), not copied from the update, so a campaign can compare what the controller
+// holds with what the coprocessor sent; a store with degraded blocks holds more forbidden cells
+// than were sent and hashes differently. Thread context: the cycle's thread. Hosted code: it writes
+// to a buffered stream and keeps a dense copy of the map (allocated once); flushed every 50 ms (a
+// killed program loses at most that much) and by flush().
 
 #include <cstdint>
 #include <ostream>
