@@ -8,7 +8,7 @@
 #include "model_fixture.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {

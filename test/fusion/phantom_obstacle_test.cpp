@@ -11,8 +11,8 @@
 #include <numbers>
 
 #include "safecell/fusion/forbidden_map_fusion.hpp"
-#include "safecell/lut/cell_table_builder.hpp"
-#include "safecell/lut/pixel_table_builder.hpp"
+#include "safecell/lut_build/cell_table_builder.hpp"
+#include "safecell/lut_build/pixel_table_builder.hpp"
 
 namespace safecell {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/lut/cell_set.hpp"
 
 namespace safecell::test {
 

@@ -1,4 +1,4 @@
-#include "safecell/lut/ball_projection.hpp"
+#include "safecell/envelope/ball_projection.hpp"
 
 #include <gtest/gtest.h>
 

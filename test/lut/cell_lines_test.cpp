@@ -1,4 +1,4 @@
-#include "safecell/lut/cell_lines.hpp"
+#include "safecell/cellsets/cell_lines.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "safecell/lut/cell_slices.hpp"
-#include "safecell/lut/pixel_to_cells_table.hpp"
-#include "safecell/lut/strip_cover.hpp"
+#include "safecell/cellsets/cell_slices.hpp"
+#include "safecell/tables/pixel_to_cells_table.hpp"
+#include "safecell/tables/strip_cover.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {

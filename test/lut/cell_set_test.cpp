@@ -1,4 +1,4 @@
-#include "safecell/lut/cell_set.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "safecell/lut/cell_slices.hpp"
+#include "safecell/cellsets/cell_slices.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,12 +2,12 @@
 // robot covers there, it is much smaller than LUT-1 of the robot's cell, and its widening covers
 // the motion within the time-sync error.
 
-#include "safecell/lut/configuration_silhouettes.hpp"
+#include "safecell/silhouettes/configuration_silhouettes.hpp"
 
 #include <gtest/gtest.h>
 
 #include "model_fixture.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/test/property.hpp"
 

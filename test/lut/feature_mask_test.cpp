@@ -1,4 +1,4 @@
-#include "safecell/lut/feature_mask.hpp"
+#include "safecell/features/feature_mask.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "safecell/lut/lut_file.hpp"
+#include "safecell/lut_files/lut_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "model_fixture.hpp"
-#include "safecell/lut/cell_table_builder.hpp"
-#include "safecell/lut/lut_cache.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/cell_table_builder.hpp"
+#include "safecell/lut_build/model_luts.hpp"
+#include "safecell/lut_files/lut_cache.hpp"
 
 namespace safecell {
 namespace {

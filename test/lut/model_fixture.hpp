@@ -9,7 +9,7 @@
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cell/default_cell.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 
 namespace safecell::test {
 

@@ -1,4 +1,4 @@
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 
 #include "model_fixture.hpp"
 #include "safecell/geometry/tessellate.hpp"
-#include "safecell/lut/cell_table_builder.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
-#include "safecell/lut/pixel_table_builder.hpp"
+#include "safecell/lut_build/cell_table_builder.hpp"
+#include "safecell/lut_build/pixel_table_builder.hpp"
 #include "safecell/robot/kinematics.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/ground_truth.hpp"
 #include "safecell/test/property.hpp"

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "model_fixture.hpp"
-#include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/silhouettes/robot_silhouettes.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/test/property.hpp"
 

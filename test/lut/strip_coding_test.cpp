@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "safecell/lut/pixel_to_cells_table.hpp"
-#include "safecell/lut/strip_cover.hpp"
+#include "safecell/tables/pixel_to_cells_table.hpp"
+#include "safecell/tables/strip_cover.hpp"
 #include "safecell/test/property.hpp"
 
 namespace safecell {

@@ -1,4 +1,4 @@
-#include "safecell/lut/word_loops.hpp"
+#include "safecell/compute/word_loops.hpp"
 
 #include <gtest/gtest.h>
 

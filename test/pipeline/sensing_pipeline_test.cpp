@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "model_fixture.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim_sources/simulated_reference.hpp"
 #include "safecell/test/property.hpp"

@@ -8,7 +8,7 @@
 
 #include "model_fixture.hpp"
 #include "safecell/cell/default_cell.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 #include "safecell/robot/kinematics.hpp"
 #include "safecell/sim/ground_truth.hpp"
 #include "safecell/test/property.hpp"

@@ -9,7 +9,7 @@
 
 #include "model_fixture.hpp"
 #include "safecell/cell/default_cell.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 #include "safecell/validation/configuration_strata.hpp"
 
 namespace safecell {

@@ -4,7 +4,7 @@
 
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cell/default_cell.hpp"
-#include "safecell/lut/model_luts.hpp"
+#include "safecell/lut_build/model_luts.hpp"
 #include "safecell/sim/demo_scenario.hpp"
 #include "safecell/validation/demo_maps.hpp"
 

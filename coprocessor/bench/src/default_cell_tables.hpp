@@ -5,10 +5,10 @@
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/lut/cell_set.hpp"
-#include "safecell/lut/lut_set.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
+#include "safecell/tables/lut_set.hpp"
 
 namespace safecell {
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "report_video.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/closed_loop/closed_loop_record.hpp"
 #include "safecell/closed_loop/demo_world.hpp"
-#include "safecell/lut/cell_set.hpp"
 #include "safecell/validation/scene_check.hpp"
 #include "simulated_sensing.hpp"
 

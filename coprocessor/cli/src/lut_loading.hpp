@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-#include "safecell/lut/lut_cache.hpp"
+#include "safecell/lut_files/lut_cache.hpp"
 
 namespace safecell {
 

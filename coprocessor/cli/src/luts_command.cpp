@@ -19,8 +19,8 @@
 #include "safecell/cli/cli_app.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/errors/input_error.hpp"
-#include "safecell/lut/lut_cache.hpp"
-#include "safecell/lut/lut_file.hpp"
+#include "safecell/lut_files/lut_cache.hpp"
+#include "safecell/lut_files/lut_file.hpp"
 
 namespace safecell {
 namespace {

@@ -24,9 +24,9 @@
 #include "safecell/errors/input_error.hpp"
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/files/read_file.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
 #include "safecell/service/incident_folder.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 #include "service_setup.hpp"
 
 namespace safecell {

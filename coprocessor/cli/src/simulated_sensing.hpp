@@ -10,8 +10,8 @@
 
 #include "lut_loading.hpp"
 #include "safecell/cell/cell_model.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 #include "safecell/sim/simulated_cell.hpp"
 #include "safecell/sim_sources/simulated_reference.hpp"
 

@@ -16,7 +16,7 @@
 #include "safecell/cli/closed_loop_validate_command.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/errors/input_error.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 #include "safecell/validation/ground_truth_validation.hpp"
 #include "scene_options.hpp"
 #include "validation_json.hpp"

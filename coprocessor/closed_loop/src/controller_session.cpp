@@ -6,7 +6,7 @@
 
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/link/link_errors.hpp"
-#include "safecell/lut/configuration_silhouettes.hpp"
+#include "safecell/silhouettes/configuration_silhouettes.hpp"
 
 namespace safecell {
 namespace {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "safecell/lut/word_loops.hpp"
+#include "safecell/compute/word_loops.hpp"
 
 namespace safecell {
 

@@ -6,7 +6,7 @@
 
 #include "safecell/acquisition/exposure_sync.hpp"
 #include "safecell/features/blocked_mask.hpp"
-#include "safecell/lut/model_silhouettes.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 
 namespace safecell {
 namespace {

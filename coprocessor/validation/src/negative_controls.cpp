@@ -3,7 +3,7 @@
 #include <array>
 #include <vector>
 
-#include "safecell/lut/leb128.hpp"
+#include "safecell/cellsets/leb128.hpp"
 
 namespace safecell {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/lut/cell_set.hpp"
 
 namespace safecell {
 

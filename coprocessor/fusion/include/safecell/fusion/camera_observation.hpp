@@ -2,7 +2,7 @@
 // What one camera says in one cycle: its blocked feature cells, or that its view is unknown
 // (a camera fault, a missing frame). An unknown view marks every cell the camera could see.
 
-#include "safecell/lut/feature_mask.hpp"
+#include "safecell/features/feature_mask.hpp"
 
 namespace safecell {
 

@@ -23,9 +23,9 @@
 
 #include "safecell/fusion/camera_observation.hpp"
 #include "safecell/fusion/robot_removal.hpp"
-#include "safecell/lut/configuration_silhouettes.hpp"
-#include "safecell/lut/lut_set.hpp"
-#include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/silhouettes/configuration_silhouettes.hpp"
+#include "safecell/silhouettes/robot_silhouettes.hpp"
+#include "safecell/tables/lut_set.hpp"
 
 namespace safecell {
 

@@ -15,7 +15,7 @@
 // along the whole arm and mark the robot's own configuration as an obstacle whenever a person
 // touches its image; a person wholly hidden in one camera is left to the other cameras.
 
-#include "safecell/lut/feature_mask.hpp"
+#include "safecell/features/feature_mask.hpp"
 
 namespace safecell {
 

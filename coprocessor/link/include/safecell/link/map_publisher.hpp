@@ -14,7 +14,7 @@
 #include <deque>
 #include <vector>
 
-#include "safecell/lut/cell_set.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/v1/map.pb.h"
 
 namespace safecell {

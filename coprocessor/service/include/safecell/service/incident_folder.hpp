@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "safecell/acquisition/frame_set.hpp"
-#include "safecell/lut/cell_set.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 
 namespace safecell {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "safecell/acquisition/frame_set.hpp"
-#include "safecell/lut/cell_set.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/service/incident_folder.hpp"
 #include "safecell/service/sensing_service.hpp"
 

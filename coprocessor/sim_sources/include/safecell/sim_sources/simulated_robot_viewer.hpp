@@ -8,7 +8,7 @@
 
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/features/feature_extractor.hpp"
-#include "safecell/lut/feature_mask.hpp"
+#include "safecell/features/feature_mask.hpp"
 #include "safecell/sim/simulated_cell.hpp"
 
 namespace safecell {

@@ -12,7 +12,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "safecell/camera/feature_grid.hpp"
-#include "safecell/lut/feature_mask.hpp"
+#include "safecell/features/feature_mask.hpp"
 #include "safecell/sim/body_id.hpp"
 
 namespace safecell {

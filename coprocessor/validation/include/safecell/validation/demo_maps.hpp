@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/lut/cell_set.hpp"
-#include "safecell/lut/lut_set.hpp"
-#include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/silhouettes/robot_silhouettes.hpp"
+#include "safecell/tables/lut_set.hpp"
 
 namespace safecell {
 

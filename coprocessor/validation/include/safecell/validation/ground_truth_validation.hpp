@@ -20,8 +20,8 @@
 
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
-#include "safecell/lut/lut_set.hpp"
-#include "safecell/lut/robot_silhouettes.hpp"
+#include "safecell/silhouettes/robot_silhouettes.hpp"
+#include "safecell/tables/lut_set.hpp"
 #include "safecell/validation/model_error.hpp"
 #include "safecell/validation/negative_controls.hpp"
 #include "safecell/validation/scene_check.hpp"

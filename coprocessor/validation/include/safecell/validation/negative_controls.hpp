@@ -19,7 +19,7 @@
 #include <string>
 
 #include "safecell/cspace/cspace_grid.hpp"
-#include "safecell/lut/lut_set.hpp"
+#include "safecell/tables/lut_set.hpp"
 
 namespace safecell {
 

@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
-#include "safecell/lut/cell_set.hpp"
+#include "safecell/cellsets/cell_set.hpp"
 #include "safecell/sim/simulated_cell.hpp"
 #include "safecell/validation/body_visibility.hpp"
 

@@ -1,0 +1,154 @@
+#include "safecell/cellsets/cell_lines.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "safecell/cellsets/leb128.hpp"
+#include "safecell/compute/word_loops.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr std::uint64_t kAll = ~std::uint64_t{0};
+
+// Bits first..first+count-1 of a word (count 1..64, first + count <= 64).
+std::uint64_t bit_run(std::uint32_t first, std::uint32_t count) {
+  return (kAll >> (64 - count)) << first;
+}
+
+}  // namespace
+
+CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
+    : axes_(axes), levels_(LineLevels::of(axes, cell_count)) {
+  words_per_line_ = (levels_.line_cells + 63) / 64;
+  words_.assign(levels_.total_lines() * words_per_line_, 0);
+  lowest_written_ = levels_.count;
+}
+
+void CellLines::clear() {
+  std::fill(words_.begin(), words_.end(), 0);
+  lowest_written_ = levels_.count;
+}
+
+std::size_t CellLines::add_strips(const std::uint8_t* begin, const std::uint8_t* end) {
+  if (begin == end) return 0;
+  if (words_per_line_ != 1) return add_strips_long_lines(begin, end);
+  // Strips come in ascending line order: the first holds the entry's lowest line.
+  const std::uint8_t* at = begin;
+  std::size_t line = read_leb128(at);
+  lowest_written_ = std::min(lowest_written_, levels_.level_of(line));
+  std::uint64_t* const words = words_.data();
+  std::size_t written = 0;
+  while (true) {
+    const std::uint32_t count = *at++;
+    std::uint64_t* const strip = words + line;
+    // Joint 0 fits a word, so every run's first cell and length are below 128: one byte each.
+    for (std::uint32_t k = 0; k < count; ++k, at += 2) strip[k] |= bit_run(at[0], at[1]);
+    written += count;
+    if (at == end) return written;
+    line += read_leb128(at);
+  }
+}
+
+std::size_t CellLines::add_strips_long_lines(const std::uint8_t* begin, const std::uint8_t* end) {
+  const std::uint8_t* at = begin;
+  std::size_t line = read_leb128(at);
+  lowest_written_ = std::min(lowest_written_, levels_.level_of(line));
+  std::size_t written = 0;
+  while (true) {
+    const std::uint32_t count = *at++;
+    for (std::uint32_t k = 0; k < count; ++k) {
+      auto cell = static_cast<std::uint32_t>(read_leb128(at));
+      auto left = static_cast<std::uint32_t>(read_leb128(at));
+      std::uint64_t* const words = words_.data() + (line + k) * words_per_line_;
+      while (left > 0) {
+        const std::uint32_t part = std::min(left, 64 - cell % 64);
+        words[cell / 64] |= bit_run(cell % 64, part);
+        cell += part;
+        left -= part;
+      }
+    }
+    written += count;
+    if (at == end) return written;
+    line += read_leb128(at);
+  }
+}
+
+void CellLines::fold() {
+  for (std::uint32_t level = lowest_written_; level < levels_.count; ++level) {
+    std::uint64_t* const low = words_.data() + levels_.first_line[level] * words_per_line_;
+    std::uint64_t* up = words_.data() + levels_.first_line[level + 1] * words_per_line_;
+    const std::size_t words = levels_.lines_of(level) * words_per_line_;
+    for (std::uint32_t copy = 0; copy < axes_.cells[level]; ++copy, up += words) {
+      or_words(up, low, words);
+    }
+    std::fill(low, low + words, 0);
+  }
+  lowest_written_ = levels_.count;
+}
+
+std::span<const std::uint64_t> CellLines::lines() const {
+  if (lowest_written_ != levels_.count) throw std::logic_error("cell lines read before fold()");
+  return std::span<const std::uint64_t>(words_).subspan(levels_.first_line[levels_.count] *
+                                                        words_per_line_);
+}
+
+bool CellLines::contains(CellLines& other) {
+  if (other.words_.size() != words_.size())
+    throw std::invalid_argument("cell sets of different grids");
+  fold();
+  other.fold();
+  const std::span<const std::uint64_t> mine = lines();
+  const std::span<const std::uint64_t> theirs = other.lines();
+  return !any_missing(mine.data(), theirs.data(), mine.size());
+}
+
+void CellLines::pack_into(CellSet& cells) {
+  fold();
+  pack_lines(lines(), cells);
+}
+
+void CellLines::pack_lines(std::span<const std::uint64_t> lines, CellSet& cells) const {
+  if (cells.cell_count() != levels_.cell_count || lines.size() != line_count() * words_per_line_) {
+    throw std::invalid_argument("cell sets of different grids");
+  }
+  std::uint64_t* const out = cells.words().data();
+  const std::uint32_t line_cells = levels_.line_cells;
+  if (words_per_line_ == 1) {
+    // Each line's bits appended to a word that is written out whenever it fills: every word of
+    // `cells` is written once, no read.
+    const std::uint64_t line_bits = bit_run(0, line_cells);
+    std::uint64_t word = 0;
+    std::uint32_t filled = 0;
+    std::size_t next = 0;
+    for (std::size_t line = 0; line < line_count(); ++line) {
+      const std::uint64_t bits = lines[line] & line_bits;
+      word |= bits << filled;
+      filled += line_cells;
+      if (filled >= 64) {
+        out[next++] = word;
+        filled -= 64;
+        // The line's top `filled` bits did not fit.
+        word = filled == 0 ? 0 : bits >> (line_cells - filled);
+      }
+    }
+    if (filled != 0) out[next] = word;
+    return;
+  }
+  cells.clear();
+  for (std::size_t line = 0; line < line_count(); ++line) {
+    const std::uint64_t* in = lines.data() + line * words_per_line_;
+    std::size_t at = line * line_cells;
+    for (std::uint32_t word = 0, left = line_cells; left > 0; ++word) {
+      const std::uint32_t count = std::min<std::uint32_t>(left, 64);
+      const std::uint64_t bits = in[word] & bit_run(0, count);
+      // `bits` lands at bit `at`, over at most two words of the compact layout.
+      out[at / 64] |= bits << (at % 64);
+      if (at % 64 != 0 && at % 64 + count > 64) out[at / 64 + 1] |= bits >> (64 - at % 64);
+      at += count;
+      left -= count;
+    }
+  }
+}
+
+}  // namespace safecell

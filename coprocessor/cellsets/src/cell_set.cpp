@@ -1,0 +1,62 @@
+#include "safecell/cellsets/cell_set.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "safecell/compute/cpu_clones.hpp"
+#include "safecell/cspace/cell_bits.hpp"
+
+namespace safecell {
+
+CellSet::CellSet(std::uint32_t cell_count)
+    : cell_count_(cell_count), words_(cell_bits::words_for(cell_count), 0) {}
+
+void CellSet::set_range(CellIndex begin, CellIndex end) {
+  cell_bits::set_range(words_.data(), begin, end);
+}
+
+void CellSet::reset_range(CellIndex begin, CellIndex end) {
+  cell_bits::clear_range(words_.data(), begin, end);
+}
+
+bool CellSet::all_in_range(CellIndex begin, CellIndex end) const {
+  return cell_bits::all_set(words_.data(), begin, end);
+}
+
+void CellSet::clear() { std::fill(words_.begin(), words_.end(), 0); }
+
+void CellSet::fill() {
+  clear();
+  set_range(0, cell_count_);
+}
+
+// Inlined here so the CPU clones count with the popcount instruction.
+SAFECELL_CPU_CLONES std::size_t CellSet::count() const {
+  return static_cast<std::size_t>(cell_bits::count(words_.data(), 0, cell_count_));
+}
+
+bool CellSet::any() const {
+  return std::any_of(words_.begin(), words_.end(), [](std::uint64_t word) { return word != 0; });
+}
+
+CellIndex CellSet::next_set(CellIndex from) const {
+  return cell_bits::next_set(words_.data(), from, cell_count_);
+}
+
+CellIndex CellSet::next_clear(CellIndex from, CellIndex limit) const {
+  return cell_bits::next_clear(words_.data(), from, std::min(limit, cell_count_));
+}
+
+CellSet& CellSet::operator|=(const CellSet& other) {
+  if (other.cell_count_ != cell_count_) throw std::invalid_argument("cell sets of different grids");
+  for (std::size_t i = 0; i < words_.size(); ++i) words_[i] |= other.words_[i];
+  return *this;
+}
+
+CellSet& CellSet::operator&=(const CellSet& other) {
+  if (other.cell_count_ != cell_count_) throw std::invalid_argument("cell sets of different grids");
+  for (std::size_t i = 0; i < words_.size(); ++i) words_[i] &= other.words_[i];
+  return *this;
+}
+
+}  // namespace safecell

@@ -1,0 +1,98 @@
+#pragma once
+// The conservative envelope of a C-space cell: balls that hold every point of the robot for every
+// configuration inside the cell (each joint anywhere within the cell's width; a joint that is not
+// discretised anywhere in its range). This is what LUT-1 projects and what the static obstacles
+// are tested against (DESIGN.md §3, "Conservativeness").
+//
+// Method. Each ball of link j is placed at the cell's centre configuration and then swept by
+// joints j, j-1, ..., 0 in turn. Turning joint k by at most h about its axis moves the ball's
+// centre, at distance r from the axis, by at most the chord 2 r sin(h / 2) (h capped at pi); the
+// swept ball lies in the ball grown by that chord. For wide sweeps the ball about the centre's
+// foot point on the axis, grown by r, is smaller and used instead. A prismatic joint grows it by
+// half the cell's width. Turning joint k moves the axes of joints before it not at all, so the
+// grown ball is then swept by joint k-1 the same way. No sampling: the bound holds exactly.
+//
+// This bound is the rigorous form of the paper's "m_max / 2": moving inside a cell along every
+// discretised joint at once adds the joints' chords, so the envelope is wider than m_max / 2 for
+// points far out on the arm.
+//
+// Head and tail. The bodies near the base (the head) depend on few joint-cell combinations
+// ("prefixes"), so users derive what they need from them once per prefix. The balls of the
+// other bodies (the tail, links k.. with k = tail_body() - 1) are swept by joints n-1..k in the
+// frame of link k, where joint k's axis is fixed and the result depends only on the cells of
+// joints k+1..: made once per such combination at construction, and balls held wholly inside
+// another ball of the same combination dropped (the swept wrist collapses into a few large balls).
+// Per cell only the rest remains: place them with link k's pose and sweep by joints k-1..0. The
+// envelope holds the robot all the same: every point lies in a kept ball before the last sweeps,
+// and the sweeps of that ball hold its paths.
+
+#include <cstdint>
+#include <vector>
+
+#include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/envelope/robot_balls.hpp"
+#include "safecell/robot/robot_model.hpp"
+
+namespace safecell {
+
+class CellEnvelope {
+ public:
+  // Bodies with at most this many prefixes belong to the head, unless told otherwise.
+  static constexpr std::size_t kMaxHeadPrefixes = 4096;
+  // Tail tables larger than this many balls in all are not made; the tail is then computed per
+  // cell like the head.
+  static constexpr std::size_t kMaxTailBalls = std::size_t{1} << 18;
+  // Changes whenever the balls of a cell change (table fingerprints include it). 2: tail tables.
+  static constexpr std::uint32_t kMethodVersion = 2;
+
+  // padding_m: added to every ball (calibration and model error). Bodies with at most
+  // max_head_prefixes prefixes form the head. Throws std::invalid_argument when the grid's joint
+  // count is not the robot's, or the padding is negative or not finite.
+  CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid, double padding_m,
+               std::size_t max_head_prefixes = kMaxHeadPrefixes);
+
+  // The envelope of one cell, in the robot base frame (= the cell frame), into `balls` (cleared
+  // first). Thread-safe; `balls` is the caller's scratch and keeps its capacity.
+  // Precondition: coords inside the grid (std::out_of_range otherwise).
+  void balls_of_cell(const GridCoords& coords, std::vector<Ball>& balls) const {
+    balls_of_bodies(coords, 0, balls);
+  }
+
+  // Bodies: 0 is the base, body j + 1 is link j. The balls of body b depend only on the cells of
+  // joints 0..b-1 (its prefix).
+  [[nodiscard]] std::size_t body_count() const { return robot_balls_.links.size() + 1; }
+  // The first body of the tail (body_count() when every body has few prefixes).
+  [[nodiscard]] std::size_t tail_body() const { return tail_body_; }
+  [[nodiscard]] std::size_t prefix_count(std::size_t body) const;
+  [[nodiscard]] std::size_t prefix_of(const GridCoords& coords, std::size_t body) const;
+  // The balls of one body for one prefix (appended to `balls`).
+  void append_body_balls(std::size_t body, std::size_t prefix, std::vector<Ball>& balls) const;
+  // The balls of bodies first_body.. of the cell, into `balls` (cleared first). Thread-safe.
+  void balls_of_bodies(const GridCoords& coords, std::size_t first_body,
+                       std::vector<Ball>& balls) const;
+  // How many balls the tail tables hold in all (0 when there are none).
+  [[nodiscard]] std::size_t tail_table_balls() const;
+
+  [[nodiscard]] const CspaceGrid& grid() const { return grid_; }
+  [[nodiscard]] std::size_t ball_count() const { return robot_balls_.count(); }
+
+ private:
+  struct CellFrames;  // link poses and joint axes at a cell's centre
+
+  [[nodiscard]] const CellFrames& frames_of(const GridCoords& coords) const;
+  // The balls of bodies first_body..end_body-1, each swept by its joints down to joint
+  // lowest_joint.
+  void append_link_balls(const CellFrames& frames, std::size_t first_body, std::size_t end_body,
+                         std::size_t lowest_joint, std::vector<Ball>& balls) const;
+  void make_tail_tables(std::size_t max_head_prefixes);
+  [[nodiscard]] std::size_t suffix_of(const GridCoords& coords) const;
+
+  RobotModel robot_;
+  RobotBalls robot_balls_;
+  CspaceGrid grid_;
+  double padding_m_;
+  std::size_t tail_body_ = 0;
+  std::vector<std::vector<Ball>> tail_tables_;  // [suffix]: in link (tail_body_ - 1)'s frame
+};
+
+}  // namespace safecell

@@ -1,0 +1,209 @@
+#include "safecell/envelope/cell_envelope.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "safecell/robot/kinematics.hpp"
+
+namespace safecell {
+namespace {
+
+// How one joint moves the balls after it within the cell: about (or along) `direction` through
+// `point`, by up to half_width either way.
+struct JointAxis {
+  Eigen::Vector3d point;      // on the axis, base frame
+  Eigen::Vector3d direction;  // unit, base frame
+  bool prismatic = false;
+  double half_width = 0.0;        // rad (m for a prismatic joint)
+  double chord_per_radius = 0.0;  // 2 sin(min(half_width, pi) / 2)
+};
+
+// Grows `ball` (base frame) so that it holds the ball turned or shifted by the joint.
+void sweep(const JointAxis& axis, Ball& ball) {
+  if (axis.prismatic) {
+    ball.radius_m += axis.half_width;
+    return;
+  }
+  const Eigen::Vector3d offset = ball.centre_m - axis.point;
+  const Eigen::Vector3d foot = axis.point + offset.dot(axis.direction) * axis.direction;
+  const double r = (ball.centre_m - foot).norm();
+  const double chord = axis.chord_per_radius * r;
+  if (r < chord) {
+    ball.centre_m = foot;
+    ball.radius_m += r;
+  } else {
+    ball.radius_m += chord;
+  }
+}
+
+// Balls inside another by less than this are kept (rounding must not drop a sliver of the robot).
+constexpr double kCoverMargin_m = 1e-9;
+
+// The balls without those that lie inside another: the union is the same.
+std::vector<Ball> without_covered_balls(std::vector<Ball> balls) {
+  // Largest first: a ball inside a dropped ball is inside the kept ball that holds that one.
+  std::stable_sort(balls.begin(), balls.end(),
+                   [](const Ball& a, const Ball& b) { return a.radius_m > b.radius_m; });
+  std::vector<Ball> kept;
+  for (const Ball& ball : balls) {
+    const bool covered = std::any_of(kept.begin(), kept.end(), [&ball](const Ball& big) {
+      return (ball.centre_m - big.centre_m).norm() + ball.radius_m <= big.radius_m - kCoverMargin_m;
+    });
+    if (!covered) kept.push_back(ball);
+  }
+  return kept;
+}
+
+}  // namespace
+
+struct CellEnvelope::CellFrames {
+  std::vector<double> q;
+  std::vector<Eigen::Isometry3d> poses;  // of the links, base frame
+  JointAxis axes[kMaxJoints];
+};
+
+CellEnvelope::CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid,
+                           double padding_m, std::size_t max_head_prefixes)
+    : robot_(robot), robot_balls_(std::move(balls)), grid_(grid), padding_m_(padding_m) {
+  if (grid.joint_count() != robot.dof()) {
+    throw std::invalid_argument("the C-space grid has " + std::to_string(grid.joint_count()) +
+                                " joints, the robot '" + robot.name + "' " +
+                                std::to_string(robot.dof()));
+  }
+  if (robot_balls_.links.size() != robot.dof()) {
+    throw std::invalid_argument("the ball cover has " + std::to_string(robot_balls_.links.size()) +
+                                " links, the robot " + std::to_string(robot.dof()));
+  }
+  if (!std::isfinite(padding_m) || padding_m < 0.0) {
+    throw std::invalid_argument("padding must be finite and >= 0 m, got " +
+                                std::to_string(padding_m));
+  }
+  make_tail_tables(max_head_prefixes);
+}
+
+std::size_t CellEnvelope::prefix_count(std::size_t body) const {
+  std::size_t count = 1;
+  for (std::uint32_t joint = 0; joint < body; ++joint) count *= grid_.cells_along(joint);
+  return count;
+}
+
+std::size_t CellEnvelope::prefix_of(const GridCoords& coords, std::size_t body) const {
+  std::size_t prefix = 0;
+  for (std::uint32_t joint = static_cast<std::uint32_t>(body); joint-- > 0;) {
+    prefix = prefix * grid_.cells_along(joint) + coords.along[joint];
+  }
+  return prefix;
+}
+
+void CellEnvelope::make_tail_tables(std::size_t max_head_prefixes) {
+  tail_body_ = 1;  // the base has no joint before it: always the head
+  while (tail_body_ < body_count() && prefix_count(tail_body_) <= max_head_prefixes) ++tail_body_;
+  if (tail_body_ == body_count()) return;
+  const std::size_t first_link = tail_body_ - 1;
+  std::size_t suffixes = 1;
+  for (std::size_t joint = first_link + 1; joint < grid_.joint_count(); ++joint) {
+    suffixes *= grid_.cells_along(static_cast<std::uint32_t>(joint));
+  }
+  std::size_t balls_per_suffix = 0;
+  for (std::size_t link = first_link; link < robot_balls_.links.size(); ++link) {
+    balls_per_suffix += robot_balls_.links[link].size();
+  }
+  if (suffixes * balls_per_suffix > kMaxTailBalls) return;
+  tail_tables_.resize(suffixes);
+  std::vector<Ball> swept;
+  for (std::size_t suffix = 0; suffix < suffixes; ++suffix) {
+    GridCoords coords;  // the head's joints at their first cell: they do not enter
+    std::size_t rest = suffix;
+    for (std::size_t joint = first_link + 1; joint < grid_.joint_count(); ++joint) {
+      const std::uint32_t cells = grid_.cells_along(static_cast<std::uint32_t>(joint));
+      coords.along[joint] = static_cast<std::uint32_t>(rest % cells);
+      rest /= cells;
+    }
+    const CellFrames& frames = frames_of(coords);
+    swept.clear();
+    append_link_balls(frames, tail_body_, body_count(), first_link, swept);
+    const Eigen::Isometry3d to_link = frames.poses[first_link].inverse();
+    for (Ball& ball : swept) ball.centre_m = to_link * ball.centre_m;
+    tail_tables_[suffix] = without_covered_balls(swept);
+  }
+}
+
+std::size_t CellEnvelope::suffix_of(const GridCoords& coords) const {
+  std::size_t suffix = 0;
+  for (std::size_t joint = grid_.joint_count(); joint-- > tail_body_;) {
+    suffix = suffix * grid_.cells_along(static_cast<std::uint32_t>(joint)) + coords.along[joint];
+  }
+  return suffix;
+}
+
+std::size_t CellEnvelope::tail_table_balls() const {
+  std::size_t count = 0;
+  for (const auto& table : tail_tables_) count += table.size();
+  return count;
+}
+
+void CellEnvelope::append_body_balls(std::size_t body, std::size_t prefix,
+                                     std::vector<Ball>& balls) const {
+  GridCoords coords;
+  for (std::uint32_t joint = 0; joint < body; ++joint) {
+    coords.along[joint] = static_cast<std::uint32_t>(prefix % grid_.cells_along(joint));
+    prefix /= grid_.cells_along(joint);
+  }
+  append_link_balls(frames_of(coords), body, body + 1, 0, balls);
+}
+
+void CellEnvelope::balls_of_bodies(const GridCoords& coords, std::size_t first_body,
+                                   std::vector<Ball>& balls) const {
+  balls.clear();
+  const CellFrames& frames = frames_of(coords);
+  const bool from_tables = !tail_tables_.empty() && first_body <= tail_body_;
+  append_link_balls(frames, first_body, from_tables ? tail_body_ : body_count(), 0, balls);
+  if (!from_tables) return;
+  const std::size_t first_link = tail_body_ - 1;
+  const Eigen::Isometry3d& pose = frames.poses[first_link];
+  for (const Ball& local : tail_tables_[suffix_of(coords)]) {
+    Ball ball{pose * local.centre_m, local.radius_m};
+    for (std::size_t k = first_link; k-- > 0;) sweep(frames.axes[k], ball);
+    balls.push_back(ball);
+  }
+}
+
+const CellEnvelope::CellFrames& CellEnvelope::frames_of(const GridCoords& coords) const {
+  const auto centre = grid_.cell_centre(coords);
+  if (!centre.ok()) throw std::out_of_range("cell coordinates outside the C-space grid");
+  // Scratch per thread, so that fusion's cycle allocates nothing after its first.
+  thread_local CellFrames frames;
+  const std::size_t joints = grid_.joint_count();
+  frames.q.assign(centre.value().rad, centre.value().rad + joints);
+  link_poses(robot_, frames.q, frames.poses);
+  for (std::size_t k = 0; k < joints; ++k) {
+    const double half_width = grid_.cell_width_rad(static_cast<std::uint32_t>(k)) / 2.0;
+    frames.axes[k] =
+        JointAxis{frames.poses[k].translation(), frames.poses[k].linear() * robot_.joints[k].axis,
+                  robot_.joints[k].type == JointType::kPrismatic, half_width,
+                  2.0 * std::sin(std::min(half_width, std::numbers::pi) / 2.0)};
+  }
+  return frames;
+}
+
+void CellEnvelope::append_link_balls(const CellFrames& frames, std::size_t first_body,
+                                     std::size_t end_body, std::size_t lowest_joint,
+                                     std::vector<Ball>& balls) const {
+  if (first_body == 0 && end_body > 0) {
+    for (const auto& ball : robot_balls_.base) {
+      balls.push_back(Ball{ball.centre_m, ball.radius_m + padding_m_});
+    }
+  }
+  for (std::size_t link = std::max<std::size_t>(first_body, 1) - 1; link + 1 < end_body; ++link) {
+    for (const auto& local : robot_balls_.links[link]) {
+      Ball ball{frames.poses[link] * local.centre_m, local.radius_m + padding_m_};
+      for (std::size_t k = link + 1; k-- > lowest_joint;) sweep(frames.axes[k], ball);
+      balls.push_back(ball);
+    }
+  }
+}
+
+}  // namespace safecell

@@ -1,0 +1,68 @@
+#include "safecell/envelope/static_obstacle_cells.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <variant>
+
+#include "safecell/geometry/shape_bounds.hpp"
+
+namespace safecell {
+
+bool ball_reaches(const Ball& ball, const PlacedShape& obstacle) {
+  const Eigen::Vector3d local = obstacle.pose.inverse() * ball.centre_m;
+  if (const auto* box = std::get_if<Box>(&obstacle.shape)) {
+    const Eigen::Vector3d half = box->size_m / 2.0;
+    const Eigen::Vector3d outside = (local.cwiseAbs() - half).cwiseMax(0.0);
+    return outside.norm() <= ball.radius_m;
+  }
+  return local.norm() <= ball.radius_m + bounding_radius_m(obstacle.shape);
+}
+
+CellSet static_obstacle_cells(const CellEnvelope& envelope,
+                              const std::vector<PlacedShape>& obstacles, unsigned threads,
+                              const ProgressCallback& progress) {
+  const CspaceGrid& grid = envelope.grid();
+  CellSet cells(grid.cell_count());
+  if (obstacles.empty()) return cells;
+  const auto touches = [&obstacles](const std::vector<Ball>& balls) {
+    return std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
+      return std::any_of(obstacles.begin(), obstacles.end(),
+                         [&](const PlacedShape& obstacle) { return ball_reaches(ball, obstacle); });
+    });
+  };
+  // The head's bodies are tested once per prefix (cell_envelope.hpp).
+  const std::size_t cached_bodies = envelope.tail_body();
+  std::vector<std::vector<bool>> cached(cached_bodies);  // [body][prefix]
+  for (std::size_t body = 0; body < cached_bodies; ++body) {
+    for (std::size_t prefix = 0; prefix < envelope.prefix_count(body); ++prefix) {
+      std::vector<Ball> balls;
+      envelope.append_body_balls(body, prefix, balls);
+      cached[body].push_back(touches(balls));
+    }
+  }
+  std::mutex cells_mutex;
+  parallel_chunks(
+      grid.cell_count(), 1024, threads,
+      [&](std::size_t, std::size_t begin, std::size_t end) {
+        std::vector<Ball> balls;
+        std::vector<CellIndex> hits;
+        for (std::size_t cell = begin; cell < end; ++cell) {
+          const GridCoords coords = grid.coords_of(static_cast<CellIndex>(cell)).value();
+          bool hit = false;
+          for (std::size_t body = 0; body < cached_bodies && !hit; ++body) {
+            hit = cached[body][envelope.prefix_of(coords, body)];
+          }
+          if (!hit) {
+            envelope.balls_of_bodies(coords, cached_bodies, balls);
+            hit = touches(balls);
+          }
+          if (hit) hits.push_back(static_cast<CellIndex>(cell));
+        }
+        const std::lock_guard lock(cells_mutex);
+        for (const CellIndex cell : hits) cells.set(cell);
+      },
+      progress);
+  return cells;
+}
+
+}  // namespace safecell

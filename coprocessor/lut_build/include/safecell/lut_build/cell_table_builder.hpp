@@ -1,0 +1,33 @@
+#pragma once
+// Builds LUT-1 of every camera from a source of silhouettes: whatever says, for one C-space cell,
+// which feature cells of each camera the robot covers (the robot model in model mode, difference
+// images of the real robot in recorded mode). Parallel over cells.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "safecell/compute/parallel_chunks.hpp"
+#include "safecell/features/feature_mask.hpp"
+#include "safecell/tables/cell_to_pixels_table.hpp"
+
+namespace safecell {
+
+// Fills masks[camera] (cleared and of the grid's size on entry) for one cell. Called from several
+// threads at once.
+using CellSilhouettes = std::function<void(CellIndex cell, std::vector<FeatureMask>& masks)>;
+
+struct CellTableBuild {
+  std::uint32_t cell_count = 0;
+  std::size_t camera_count = 0;
+  int columns = 0;  // the feature grid
+  int rows = 0;
+  unsigned threads = 0;  // 0: one per hardware thread
+};
+
+// One table per camera.
+[[nodiscard]] std::vector<CellToPixelsTable> build_cell_to_pixels_tables(
+    const CellTableBuild& build, const CellSilhouettes& silhouettes,
+    const ProgressCallback& progress = {});
+
+}  // namespace safecell

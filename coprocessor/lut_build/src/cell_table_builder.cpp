@@ -1,0 +1,61 @@
+#include "safecell/lut_build/cell_table_builder.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr std::size_t kCellsPerChunk = 512;
+
+// What one chunk of cells produced for one camera: rectangles per cell, in cell order.
+struct ChunkRects {
+  std::vector<std::uint32_t> counts;
+  std::vector<FeatureRect> rects;
+};
+
+}  // namespace
+
+std::vector<CellToPixelsTable> build_cell_to_pixels_tables(const CellTableBuild& build,
+                                                           const CellSilhouettes& silhouettes,
+                                                           const ProgressCallback& progress) {
+  const std::size_t chunks = (build.cell_count + kCellsPerChunk - 1) / kCellsPerChunk;
+  // chunk_rects[chunk][camera]
+  std::vector<std::vector<ChunkRects>> chunk_rects(chunks);
+  parallel_chunks(
+      build.cell_count, kCellsPerChunk, build.threads,
+      [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+        std::vector<FeatureMask> masks(build.camera_count, FeatureMask(build.columns, build.rows));
+        std::vector<ChunkRects> out(build.camera_count);
+        for (std::size_t cell = begin; cell < end; ++cell) {
+          for (auto& mask : masks) mask.clear();
+          silhouettes(static_cast<CellIndex>(cell), masks);
+          for (std::size_t camera = 0; camera < build.camera_count; ++camera) {
+            const auto rects = masks[camera].rectangles();
+            out[camera].counts.push_back(static_cast<std::uint32_t>(rects.size()));
+            out[camera].rects.insert(out[camera].rects.end(), rects.begin(), rects.end());
+          }
+        }
+        chunk_rects[chunk] = std::move(out);
+      },
+      progress);
+
+  std::vector<CellToPixelsTable> tables;
+  tables.reserve(build.camera_count);
+  for (std::size_t camera = 0; camera < build.camera_count; ++camera) {
+    std::vector<std::uint64_t> offsets;
+    offsets.reserve(static_cast<std::size_t>(build.cell_count) + 1);
+    offsets.push_back(0);
+    std::size_t total = 0;
+    for (const auto& chunk : chunk_rects) total += chunk[camera].rects.size();
+    std::vector<FeatureRect> rects;
+    rects.reserve(total);
+    for (auto& chunk : chunk_rects) {
+      for (const std::uint32_t count : chunk[camera].counts)
+        offsets.push_back(offsets.back() + count);
+      rects.insert(rects.end(), chunk[camera].rects.begin(), chunk[camera].rects.end());
+      chunk[camera] = ChunkRects{};
+    }
+    tables.emplace_back(build.columns, build.rows, std::move(offsets), std::move(rects));
+  }
+  return tables;
+}
+
+}  // namespace safecell

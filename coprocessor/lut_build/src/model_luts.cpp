@@ -1,0 +1,104 @@
+#include "safecell/lut_build/model_luts.hpp"
+
+#include "safecell/base/fnv1a.hpp"
+#include "safecell/envelope/cell_envelope.hpp"
+#include "safecell/envelope/static_obstacle_cells.hpp"
+
+namespace safecell {
+namespace {
+
+// How the tables are cut into runs and blocks: tables of another version decode to the same cells
+// but may be slower to fuse, so a cached file of another version is built again. 2: boxes cover
+// (may overlap) instead of partitioning; 3: boxes split by the trailing joints; 4: strips of line
+// runs; 5: differences to the upper neighbour too.
+constexpr std::uint32_t kTableCutVersion = 5;
+
+void add_pose(Fnv1a64& hash, const Eigen::Isometry3d& pose) {
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 4; ++column) hash.add_double(pose.matrix()(row, column));
+  }
+}
+
+void add_balls(Fnv1a64& hash, const std::vector<Ball>& balls) {
+  hash.add_u64(balls.size());
+  for (const auto& ball : balls) {
+    hash.add_double(ball.centre_m.x());
+    hash.add_double(ball.centre_m.y());
+    hash.add_double(ball.centre_m.z());
+    hash.add_double(ball.radius_m);
+  }
+}
+
+}  // namespace
+
+std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
+                                    const ModelLutOptions& options) {
+  check_model_lut_options(cell, options);
+  Fnv1a64 hash;
+  hash.add_u64(grid.fingerprint());
+  hash.add_u32(kTableCutVersion);
+  hash.add_u32(CellEnvelope::kMethodVersion);
+  hash.add_double(options.ball_radius_m);
+  hash.add_double(options.padding_m);
+  const RobotModel& robot = *cell.robot;
+  for (const auto& joint : robot.joints) {
+    add_pose(hash, joint.origin);
+    hash.add_double(joint.axis.x());
+    hash.add_double(joint.axis.y());
+    hash.add_double(joint.axis.z());
+    hash.add_u32(static_cast<std::uint32_t>(joint.type));
+  }
+  // The robot's geometry enters through its ball cover, which is a function of every shape.
+  const RobotBalls balls = cover_with_balls(robot, options.ball_radius_m);
+  add_balls(hash, balls.base);
+  for (const auto& link : balls.links) add_balls(hash, link);
+  hash.add_u32(static_cast<std::uint32_t>(cell.feature_grid.columns()));
+  hash.add_u32(static_cast<std::uint32_t>(cell.feature_grid.rows()));
+  hash.add_u32(static_cast<std::uint32_t>(cell.feature_grid.cell_width_px()));
+  hash.add_u32(static_cast<std::uint32_t>(cell.feature_grid.cell_height_px()));
+  for (const auto& camera : cell.cameras) {
+    for (const char c : camera.name()) hash.add_byte(static_cast<std::uint8_t>(c));
+    hash.add_byte(0);
+    const CameraIntrinsics& k = camera.intrinsics();
+    for (const double value : {k.fx_px, k.fy_px, k.cx_px, k.cy_px, k.distortion.k1, k.distortion.k2,
+                               k.distortion.p1, k.distortion.p2, k.distortion.k3}) {
+      hash.add_double(value);
+    }
+    hash.add_u32(static_cast<std::uint32_t>(k.width_px));
+    hash.add_u32(static_cast<std::uint32_t>(k.height_px));
+    add_pose(hash, camera.cell_to_camera());
+  }
+  for (const auto& obstacle : cell.obstacles) {
+    add_pose(hash, obstacle.pose);
+    if (const auto* box = std::get_if<Box>(&obstacle.shape)) {
+      hash.add_double(box->size_m.x());
+      hash.add_double(box->size_m.y());
+      hash.add_double(box->size_m.z());
+    }
+  }
+  return hash.value();
+}
+
+LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
+                        const ModelLutOptions& options, const StagedProgress& progress) {
+  const ModelSilhouettes silhouettes(cell, grid, options);
+  std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
+      cell, grid,
+      [&silhouettes](CellIndex cell_index, std::vector<FeatureMask>& masks) {
+        silhouettes.add_silhouettes(cell_index, masks);
+      },
+      options.threads, progress);
+  LutSet set;
+  set.fingerprint = model_lut_fingerprint(cell, grid, options);
+  set.grid_fingerprint = grid.fingerprint();
+  set.source = LutSource::kModel;
+  set.columns = cell.feature_grid.columns();
+  set.rows = cell.feature_grid.rows();
+  set.cameras =
+      invert_cell_tables(cell, grid, std::move(cell_tables), false, options.threads, progress);
+  set.static_cells = static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads,
+                                           stage_progress(progress, 2));
+  return set;
+}
+
+}  // namespace safecell

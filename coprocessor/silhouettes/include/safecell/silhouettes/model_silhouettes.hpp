@@ -1,0 +1,56 @@
+#pragma once
+// LUT-1 from the robot model: for a C-space cell, the feature cells its envelope
+// (cell_envelope.hpp) covers in each camera, as the union of its balls' image rectangles. The
+// envelope's head, whose balls depend on few joint-cell combinations, is projected once per
+// combination at construction and reused; the tail's balls are projected per cell, several at a
+// time (ball_projection.hpp).
+//
+// Used twice: by the model-mode table build (every cell), and by robot removal at run time (one
+// cell per cycle, a few tens of microseconds), so model-mode LUT files need not store LUT-1.
+
+#include <vector>
+
+#include "safecell/cell/cell_model.hpp"
+#include "safecell/envelope/ball_projection.hpp"
+#include "safecell/envelope/cell_envelope.hpp"
+#include "safecell/silhouettes/robot_silhouettes.hpp"
+
+namespace safecell {
+
+struct ModelLutOptions {
+  double ball_radius_m = 0.06;  // size of the balls that cover the robot's surface
+  double padding_m = 0.02;      // added all round, for calibration and model error
+  unsigned threads = 0;         // 0: one per hardware thread (table builds only)
+};
+
+class ModelSilhouettes final : public RobotSilhouettes {
+ public:
+  // Throws std::invalid_argument when the cell has no robot model or no camera, or for options
+  // outside ball radius 0.005..0.5 m, padding 0..1 m.
+  ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options);
+
+  [[nodiscard]] std::size_t camera_count() const override { return projections_.size(); }
+  void add_silhouette(CellIndex cell, std::size_t camera, FeatureMask& mask) const override;
+  // Every camera at once: the envelope is computed once.
+  void add_silhouettes(CellIndex cell, std::vector<FeatureMask>& masks) const override;
+
+  [[nodiscard]] const CellEnvelope& envelope() const { return envelope_; }
+  [[nodiscard]] const FeatureGrid& feature_grid() const { return feature_grid_; }
+
+ private:
+  // masks[camera - first_camera] |= the silhouette, for cameras first_camera..end_camera-1.
+  void add_cell(CellIndex cell, std::size_t first_camera, std::size_t end_camera,
+                FeatureMask* masks) const;
+
+  CspaceGrid grid_;
+  FeatureGrid feature_grid_;
+  CellEnvelope envelope_;
+  std::vector<BallProjection> projections_;
+  std::size_t cached_bodies_ = 0;
+  std::vector<std::vector<std::vector<FeatureMask>>> cached_;  // [body][prefix][camera]
+};
+
+// Checks the options as ModelSilhouettes does (for callers that validate early).
+void check_model_lut_options(const CellModel& cell, const ModelLutOptions& options);
+
+}  // namespace safecell

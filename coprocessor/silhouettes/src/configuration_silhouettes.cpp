@@ -1,0 +1,77 @@
+#include "safecell/silhouettes/configuration_silhouettes.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "safecell/robot/kinematics.hpp"
+
+namespace safecell {
+
+std::optional<double> removal_widening_m(const RobotModel& robot, const CspaceGrid& grid,
+                                         double padding_m, double sync_error_s) {
+  if (grid.joint_count() != robot.dof()) {
+    throw std::invalid_argument("a grid of " + std::to_string(grid.joint_count()) +
+                                " joints for a robot of " + std::to_string(robot.dof()));
+  }
+  double motion_m = 0.0;
+  for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+    const double speed = robot.joints[j].max_speed;
+    if (sync_error_s > 0.0 && !(speed > 0.0)) return std::nullopt;
+    motion_m += grid.joint(j).l_m * speed * sync_error_s;
+  }
+  return padding_m + motion_m;
+}
+
+ConfigurationSilhouettes::ConfigurationSilhouettes(const CellModel& cell, double ball_radius_m,
+                                                   double widening_m)
+    : widening_m_(widening_m) {
+  if (!cell.robot) {
+    throw std::invalid_argument("cell '" + cell.config.name +
+                                "' names no robot model; robot removal at the configuration "
+                                "needs one");
+  }
+  if (cell.cameras.empty())
+    throw std::invalid_argument("cell '" + cell.config.name + "' has no camera");
+  if (!(ball_radius_m >= 0.005 && ball_radius_m <= 0.5)) {
+    throw std::invalid_argument("ball radius must be 0.005..0.5 m, got " +
+                                std::to_string(ball_radius_m));
+  }
+  if (!(widening_m >= 0.0 && widening_m <= 1.0)) {
+    throw std::invalid_argument("robot removal widening must be 0..1 m, got " +
+                                std::to_string(widening_m));
+  }
+  robot_ = *cell.robot;
+  balls_ = cover_with_balls(robot_, ball_radius_m);
+  for (auto& ball : balls_.base) ball.radius_m += widening_m;
+  for (auto& link : balls_.links) {
+    for (auto& ball : link) ball.radius_m += widening_m;
+  }
+  for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
+}
+
+void ConfigurationSilhouettes::add_silhouettes(std::span<const double> q,
+                                               std::vector<FeatureMask>& masks) const {
+  if (masks.size() != projections_.size() || q.size() != robot_.dof()) {
+    throw std::invalid_argument(std::to_string(masks.size()) + " masks and " +
+                                std::to_string(q.size()) + " joint values for " +
+                                std::to_string(projections_.size()) + " cameras and " +
+                                std::to_string(robot_.dof()) + " joints");
+  }
+  thread_local std::vector<Eigen::Isometry3d> poses;
+  thread_local std::vector<Ball> placed;
+  thread_local std::vector<double> joints;
+  joints.assign(q.begin(), q.end());
+  link_poses(robot_, joints, poses);
+  placed.assign(balls_.base.begin(), balls_.base.end());
+  for (std::size_t link = 0; link < balls_.links.size(); ++link) {
+    for (const Ball& ball : balls_.links[link]) {
+      placed.push_back(Ball{poses[link] * ball.centre_m, ball.radius_m});
+    }
+  }
+  for (std::size_t camera = 0; camera < projections_.size(); ++camera) {
+    add_ball_rects(projections_[camera], placed, masks[camera]);
+  }
+}
+
+}  // namespace safecell

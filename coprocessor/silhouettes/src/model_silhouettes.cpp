@@ -1,0 +1,95 @@
+#include "safecell/silhouettes/model_silhouettes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace safecell {
+namespace {
+
+// The envelope of the cell's robot, after the checks (so that no argument touches a missing
+// robot before they ran).
+CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
+                              const ModelLutOptions& options) {
+  check_model_lut_options(cell, options);
+  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
+                      options.padding_m);
+}
+
+}  // namespace
+
+void check_model_lut_options(const CellModel& cell, const ModelLutOptions& options) {
+  if (!cell.robot) {
+    throw std::invalid_argument("cell '" + cell.config.name +
+                                "' names no robot model; model-mode tables need one");
+  }
+  if (cell.cameras.empty()) {
+    throw std::invalid_argument("cell '" + cell.config.name + "' has no camera");
+  }
+  if (!std::isfinite(options.ball_radius_m) || options.ball_radius_m < 0.005 ||
+      options.ball_radius_m > 0.5) {
+    throw std::invalid_argument("ball radius must be 0.005..0.5 m, got " +
+                                std::to_string(options.ball_radius_m));
+  }
+  if (!std::isfinite(options.padding_m) || options.padding_m < 0.0 || options.padding_m > 1.0) {
+    throw std::invalid_argument("padding must be 0..1 m, got " + std::to_string(options.padding_m));
+  }
+}
+
+ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid,
+                                   const ModelLutOptions& options)
+    : grid_(grid),
+      feature_grid_(cell.feature_grid),
+      envelope_(checked_envelope(cell, grid, options)) {
+  projections_.reserve(cell.cameras.size());
+  for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
+  cached_bodies_ = envelope_.tail_body();  // the head, per prefix
+  cached_.resize(cached_bodies_);
+  std::vector<Ball> balls;
+  for (std::size_t body = 0; body < cached_bodies_; ++body) {
+    cached_[body].resize(envelope_.prefix_count(body));
+    for (std::size_t prefix = 0; prefix < cached_[body].size(); ++prefix) {
+      balls.clear();
+      envelope_.append_body_balls(body, prefix, balls);
+      cached_[body][prefix].assign(projections_.size(), FeatureMask(feature_grid_));
+      for (std::size_t camera = 0; camera < projections_.size(); ++camera) {
+        add_ball_rects(projections_[camera], balls, cached_[body][prefix][camera]);
+      }
+    }
+  }
+}
+
+void ModelSilhouettes::add_silhouette(CellIndex cell, std::size_t camera, FeatureMask& mask) const {
+  if (camera >= projections_.size()) {
+    throw std::out_of_range("camera " + std::to_string(camera) + " of " +
+                            std::to_string(projections_.size()));
+  }
+  add_cell(cell, camera, camera + 1, &mask);
+}
+
+void ModelSilhouettes::add_silhouettes(CellIndex cell, std::vector<FeatureMask>& masks) const {
+  if (masks.size() != projections_.size()) {
+    throw std::invalid_argument(std::to_string(masks.size()) + " masks for " +
+                                std::to_string(projections_.size()) + " cameras");
+  }
+  add_cell(cell, 0, projections_.size(), masks.data());
+}
+
+void ModelSilhouettes::add_cell(CellIndex cell, std::size_t first_camera, std::size_t end_camera,
+                                FeatureMask* masks) const {
+  const auto coords = grid_.coords_of(cell);
+  if (!coords.ok()) throw std::out_of_range("cell " + std::to_string(cell) + " outside the grid");
+  thread_local std::vector<Ball> balls;
+  envelope_.balls_of_bodies(coords.value(), cached_bodies_, balls);
+  for (std::size_t camera = first_camera; camera < end_camera; ++camera) {
+    FeatureMask& mask = masks[camera - first_camera];
+    for (std::size_t body = 0; body < cached_bodies_; ++body) {
+      mask |= cached_[body][envelope_.prefix_of(coords.value(), body)][camera];
+    }
+    add_ball_rects(projections_[camera], balls, mask);
+  }
+}
+
+}  // namespace safecell
