@@ -1,9 +1,11 @@
-// The fast fusion, the paper's baseline and a dense oracle straight from LUT-1 agree on random
-// blocked masks, unknown cameras, robot cells, thresholds and both kinds of robot removal.
+// The fast fusion, the paper's baseline and a dense oracle straight from each robot part's
+// silhouettes agree on random blocked masks, unknown cameras, robot cells, thresholds, both kinds
+// of robot removal and every way of cutting the robot into parts.
 
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "model_fixture.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
@@ -34,6 +36,16 @@ FeatureMask random_blocked(std::mt19937_64& rng, int columns, int rows) {
   return mask;
 }
 
+// The mask as its rectangles, columns and rows inclusive: enough to rebuild a failing scene.
+std::string rectangles_of(const FeatureMask& mask) {
+  std::string text;
+  for (const FeatureRect& rect : mask.rectangles()) {
+    text += " [" + std::to_string(rect.col0) + ".." + std::to_string(rect.col1) + " x " +
+            std::to_string(rect.row0) + ".." + std::to_string(rect.row1) + "]";
+  }
+  return text.empty() ? " (none)" : text;
+}
+
 CellSet dense_oracle(const LutSet& luts, const ModelSilhouettes& silhouettes,
                      const std::vector<CameraObservation>& observations, CellIndex robot_cell,
                      const FusionSettings& settings) {
@@ -43,37 +55,53 @@ CellSet dense_oracle(const LutSet& luts, const ModelSilhouettes& silhouettes,
   remove_robot_from_views(observations, {silhouettes, nullptr, robot_cell, {}}, settings, robot,
                           obstacles);
   const std::uint32_t cells = luts.static_cells.cell_count();
-  CellSet forbidden(cells);
+  CellSet forbidden = luts.static_cells;
+  std::vector<FeatureMask> part_silhouettes(cameras, FeatureMask(luts.columns, luts.rows));
   for (CellIndex cell = 0; cell < cells; ++cell) {
-    int count = 0;
-    for (std::size_t camera = 0; camera < cameras; ++camera) {
-      FeatureMask silhouette(luts.columns, luts.rows);
-      silhouettes.add_silhouette(cell, camera, silhouette);
-      const bool marks =
-          observations[camera].known ? silhouette.intersects(obstacles[camera]) : silhouette.any();
-      count += marks ? 1 : 0;
+    for (std::size_t part = 0; part < silhouettes.parts().size(); ++part) {
+      for (FeatureMask& mask : part_silhouettes) mask.clear();
+      silhouettes.add_part_silhouettes(cell, part, part_silhouettes.data());
+      int count = 0;
+      for (std::size_t camera = 0; camera < cameras; ++camera) {
+        const FeatureMask& silhouette = part_silhouettes[camera];
+        const bool marks = observations[camera].known ? silhouette.intersects(obstacles[camera])
+                                                      : silhouette.any();
+        count += marks ? 1 : 0;
+      }
+      if (count >= settings.camera_threshold) forbidden.set(cell);
     }
-    if (count >= settings.camera_threshold || luts.static_cells.test(cell)) forbidden.set(cell);
   }
   return forbidden;
 }
 
-TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
-  const test::CoarseTables tables;
+// Every part's tables of every camera of the set.
+template <typename Edit>
+void edit_parts(LutSet& luts, Edit edit) {
+  for (auto& camera : luts.cameras) {
+    for (auto& part : camera.parts) edit(part);
+  }
+}
+
+void expect_fusions_agree(PartSplit split) {
+  SCOPED_TRACE(std::string("robot parts: ") + to_string(split));
+  const test::CoarseTables tables(split);
   const CspaceGrid& grid = tables.grid;
   const LutSet& luts = tables.luts;
   const ModelSilhouettes& silhouettes = tables.silhouettes;
-  ASSERT_FALSE(luts.cameras[0].differences[kLeftNeighbour].empty());
-  ASSERT_FALSE(luts.cameras[0].differences[kUpperNeighbour].empty());
+  ASSERT_EQ(luts.parts.size(), robot_parts(*tables.cell.robot, split).size());
+  ASSERT_FALSE(luts.cameras[0].parts[0].differences[kLeftNeighbour].empty());
+  ASSERT_FALSE(luts.cameras[0].parts[0].differences[kUpperNeighbour].empty());
   // The same tables with the differences to one neighbour only, and with none (fusion then adds
   // whole entries).
   std::vector<LutSet> fewer_differences(3, luts);
-  for (auto& camera : fewer_differences[0].cameras) camera.differences[kUpperNeighbour].clear();
-  for (auto& camera : fewer_differences[1].cameras) camera.differences[kLeftNeighbour].clear();
-  for (auto& camera : fewer_differences[2].cameras) {
-    for (auto& neighbour : camera.differences) neighbour.clear();
-  }
-  test::PropertyRun run(24);
+  edit_parts(fewer_differences[0],
+             [](PartLuts& part) { part.differences[kUpperNeighbour].clear(); });
+  edit_parts(fewer_differences[1],
+             [](PartLuts& part) { part.differences[kLeftNeighbour].clear(); });
+  edit_parts(fewer_differences[2], [](PartLuts& part) {
+    for (auto& neighbour : part.differences) neighbour.clear();
+  });
+  test::PropertyRun run(split == PartSplit::kArmSegments ? 24 : 12);
   std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
   int nonempty = 0;
   for (int i = 0; i < run.iterations(); ++i) {
@@ -86,6 +114,16 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
       observation.blocked = random_blocked(run.rng(), luts.columns, luts.rows);
     }
     const CellIndex robot_cell = any_cell(run.rng());
+    // The failing input, not only the seed.
+    std::string scene = "robot cell " + std::to_string(robot_cell) + ", threshold " +
+                        std::to_string(settings.camera_threshold) + ", removal " +
+                        to_string(settings.removal);
+    for (std::size_t c = 0; c < observations.size(); ++c) {
+      scene += "; camera " + std::to_string(c) +
+               (observations[c].known ? " blocked" + rectangles_of(observations[c].blocked)
+                                      : std::string(" unknown"));
+    }
+    SCOPED_TRACE(scene);
     ForbiddenMapFusion fast(luts, silhouettes, settings);
     BaselineFusion baseline(luts, silhouettes, settings);
     const CellSet& fused = fast.fuse(observations, robot_cell);
@@ -101,6 +139,18 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracle) {
     nonempty += fused.count() > luts.static_cells.count() ? 1 : 0;
   }
   EXPECT_GT(nonempty, run.iterations() / 3) << "the random scenes forbid too little to test";
+}
+
+TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForArmSegments) {
+  expect_fusions_agree(PartSplit::kArmSegments);
+}
+
+TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForEveryLink) {
+  expect_fusions_agree(PartSplit::kPerLink);
+}
+
+TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForTheWholeRobot) {
+  expect_fusions_agree(PartSplit::kWholeRobot);
 }
 
 TEST(FusionEquivalence, ACameraStopsEarlyOnceItsSetHoldsEverythingItSees) {
@@ -125,11 +175,15 @@ TEST(FusionEquivalence, ACameraStopsEarlyOnceItsSetHoldsEverythingItSees) {
        robot_cell += 7) {
     const CellSet& fused = fast.fuse(observations, robot_cell);
     ASSERT_EQ(fused, baseline.fuse(observations, robot_cell)) << "robot cell " << robot_cell;
-    EXPECT_FALSE(fast.counts().saturated[1]);
-    EXPECT_FALSE(fast.suspicious(1).any());
-    if (!fast.counts().saturated[0]) continue;
+    const std::size_t cameras = luts.cameras.size();
+    for (std::size_t part = 0; part < luts.parts.size(); ++part) {
+      EXPECT_FALSE(fast.counts().saturated[part * cameras + 1]);
+      EXPECT_FALSE(fast.suspicious(part, 1).any());
+    }
+    const std::size_t arm = luts.parts.size() - 1;  // the forearm and wrist
+    if (!fast.counts().saturated[arm * cameras]) continue;
     ++stopped_early;
-    EXPECT_EQ(fast.suspicious(0), fast.observable(0)) << "robot cell " << robot_cell;
+    EXPECT_EQ(fast.suspicious(arm, 0), fast.observable(arm, 0)) << "robot cell " << robot_cell;
     EXPECT_EQ(fused, dense_oracle(luts, tables.silhouettes, observations, robot_cell, settings));
   }
   EXPECT_EQ(stopped_early, 3) << "camera 0 never held every cell it sees";
@@ -168,10 +222,15 @@ TEST(FusionEquivalence, BadInputsAreRefused) {
   EXPECT_THROW(ForbiddenMapFusion(luts, silhouettes, settings), std::invalid_argument);
   settings.camera_threshold = 2;
   LutSet misfit = luts;
-  misfit.cameras[1].differences[kLeftNeighbour][0] = misfit.cameras[1].pixel_blocks[0];  // 32 x 32
+  PartLuts& part = misfit.cameras[1].parts[0];
+  part.differences[kLeftNeighbour][0] = part.pixel_blocks[0];  // 32 x 32
   EXPECT_THROW(ForbiddenMapFusion(misfit, silhouettes, settings), std::invalid_argument);
   misfit = luts;
-  misfit.cameras[2].differences[kUpperNeighbour].push_back(misfit.cameras[2].pixel_to_cells);
+  PartLuts& other = misfit.cameras[2].parts[1];
+  other.differences[kUpperNeighbour].push_back(other.pixel_to_cells);
+  EXPECT_THROW(ForbiddenMapFusion(misfit, silhouettes, settings), std::invalid_argument);
+  misfit = luts;
+  misfit.cameras[3].parts.pop_back();  // tables for fewer parts than the set names
   EXPECT_THROW(ForbiddenMapFusion(misfit, silhouettes, settings), std::invalid_argument);
   ForbiddenMapFusion fusion(luts, silhouettes, settings);
   std::vector<CameraObservation> three(3, CameraObservation{true, FeatureMask(64, 64)});

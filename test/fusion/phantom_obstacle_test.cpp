@@ -73,7 +73,7 @@ Square square_of(const CspaceGrid& grid, CellIndex cell) {
 LutSet plane_luts(const CspaceGrid& grid, const std::vector<PlaneCamera>& cameras) {
   CellTableBuild build;
   build.cell_count = grid.cell_count();
-  build.camera_count = cameras.size();
+  build.table_count = cameras.size();
   build.columns = kColumns;
   build.rows = 1;
   const auto tables =
@@ -96,11 +96,12 @@ LutSet plane_luts(const CspaceGrid& grid, const std::vector<PlaneCamera>& camera
   set.columns = kColumns;
   set.rows = 1;
   set.static_cells = CellSet(grid.cell_count());
+  set.parts = {RobotPart{"arm", 0, 1}};
   for (std::size_t c = 0; c < cameras.size(); ++c) {
-    PixelTables pixels = build_pixel_to_cells_tables(tables[c], grid);
-    set.cameras.push_back(CameraLuts{"plane" + std::to_string(c), CellToPixelsTable{},
-                                     std::move(pixels.pixels), std::move(pixels.blocks), 0,
-                                     std::move(pixels.differences)});
+    CameraLuts camera;
+    camera.camera = "plane" + std::to_string(c);
+    camera.parts.push_back(build_pixel_to_cells_tables(tables[c], grid));
+    set.cameras.push_back(std::move(camera));
   }
   return set;
 }

@@ -72,27 +72,39 @@ void expect_same(const LutSet& a, const LutSet& b) {
   EXPECT_EQ(a.columns, b.columns);
   EXPECT_EQ(a.rows, b.rows);
   EXPECT_EQ(a.static_cells, b.static_cells);
+  ASSERT_EQ(a.parts.size(), b.parts.size());
+  for (std::size_t p = 0; p < a.parts.size(); ++p) {
+    EXPECT_EQ(a.parts[p].name, b.parts[p].name);
+    EXPECT_EQ(a.parts[p].first_body, b.parts[p].first_body);
+    EXPECT_EQ(a.parts[p].end_body, b.parts[p].end_body);
+  }
   ASSERT_EQ(a.cameras.size(), b.cameras.size());
   for (std::size_t c = 0; c < a.cameras.size(); ++c) {
     const CameraLuts& x = a.cameras[c];
     const CameraLuts& y = b.cameras[c];
     EXPECT_EQ(x.camera, y.camera);
-    EXPECT_EQ(x.covered_pairs, y.covered_pairs);
-    EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.offsets(), y.pixel_to_cells.offsets()));
-    EXPECT_TRUE(std::ranges::equal(x.pixel_to_cells.strip_bytes(), y.pixel_to_cells.strip_bytes()));
-    ASSERT_EQ(x.pixel_blocks.size(), y.pixel_blocks.size());
-    for (std::size_t l = 0; l < x.pixel_blocks.size(); ++l) {
-      EXPECT_TRUE(std::ranges::equal(x.pixel_blocks[l].offsets(), y.pixel_blocks[l].offsets()));
+    ASSERT_EQ(x.parts.size(), y.parts.size());
+    for (std::size_t p = 0; p < x.parts.size(); ++p) {
+      const PartLuts& u = x.parts[p];
+      const PartLuts& v = y.parts[p];
+      EXPECT_EQ(u.covered_pairs, v.covered_pairs);
+      EXPECT_TRUE(std::ranges::equal(u.pixel_to_cells.offsets(), v.pixel_to_cells.offsets()));
       EXPECT_TRUE(
-          std::ranges::equal(x.pixel_blocks[l].strip_bytes(), y.pixel_blocks[l].strip_bytes()));
-    }
-    for (std::size_t n = 0; n < kNeighbourCount; ++n) {
-      ASSERT_EQ(x.differences[n].size(), y.differences[n].size()) << "neighbour " << n;
-      for (std::size_t l = 0; l < x.differences[n].size(); ++l) {
+          std::ranges::equal(u.pixel_to_cells.strip_bytes(), v.pixel_to_cells.strip_bytes()));
+      ASSERT_EQ(u.pixel_blocks.size(), v.pixel_blocks.size());
+      for (std::size_t l = 0; l < u.pixel_blocks.size(); ++l) {
+        EXPECT_TRUE(std::ranges::equal(u.pixel_blocks[l].offsets(), v.pixel_blocks[l].offsets()));
         EXPECT_TRUE(
-            std::ranges::equal(x.differences[n][l].offsets(), y.differences[n][l].offsets()));
-        EXPECT_TRUE(std::ranges::equal(x.differences[n][l].strip_bytes(),
-                                       y.differences[n][l].strip_bytes()));
+            std::ranges::equal(u.pixel_blocks[l].strip_bytes(), v.pixel_blocks[l].strip_bytes()));
+      }
+      for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+        ASSERT_EQ(u.differences[n].size(), v.differences[n].size()) << "neighbour " << n;
+        for (std::size_t l = 0; l < u.differences[n].size(); ++l) {
+          EXPECT_TRUE(
+              std::ranges::equal(u.differences[n][l].offsets(), v.differences[n][l].offsets()));
+          EXPECT_TRUE(std::ranges::equal(u.differences[n][l].strip_bytes(),
+                                         v.differences[n][l].strip_bytes()));
+        }
       }
     }
     EXPECT_TRUE(std::ranges::equal(x.cell_to_pixels.offsets(), y.cell_to_pixels.offsets()));
@@ -111,8 +123,13 @@ TEST_F(LutFile, ModelSetRoundTrips) {
   EXPECT_EQ(summary.file_bytes, fs::file_size(path));
   ASSERT_EQ(summary.cameras.size(), 4U);
   EXPECT_EQ(summary.cameras[2].name, "cam2");
-  EXPECT_EQ(summary.cameras[2].strips, set_->cameras[2].pixel_to_cells.total_strips());
-  EXPECT_EQ(summary.cameras[2].covered_pairs, set_->cameras[2].covered_pairs);
+  std::uint64_t strips = 0;
+  for (const PartLuts& part : set_->cameras[2].parts) strips += part.pixel_to_cells.total_strips();
+  EXPECT_EQ(summary.cameras[2].strips, strips);
+  EXPECT_EQ(summary.cameras[2].covered_pairs, set_->cameras[2].covered_pairs());
+  ASSERT_EQ(summary.parts.size(), set_->parts.size());
+  EXPECT_EQ(summary.parts.back().name, set_->parts.back().name);
+  EXPECT_EQ(summary.parts.back().end_body, cell_->robot->dof() + 1);
   EXPECT_GT(summary.cameras[2].covered_pairs, 0U);
   EXPECT_EQ(summary.cameras[2].cell_table_bytes, 0U);
   EXPECT_EQ(summary.cameras[2].block_levels, 3);
@@ -124,7 +141,7 @@ TEST_F(LutFile, RecordedSetKeepsItsCellTables) {
   recorded.source = LutSource::kRecorded;
   CellTableBuild build;
   build.cell_count = grid_->cell_count();
-  build.camera_count = recorded.cameras.size();
+  build.table_count = recorded.cameras.size();
   build.columns = recorded.columns;
   build.rows = recorded.rows;
   const ModelSilhouettes silhouettes(*cell_, *grid_, ModelLutOptions{});

@@ -20,12 +20,21 @@ inline CellModel coarse_default_cell() {
   return load_cell_model(config);
 }
 
-// The coarse default cell with its model-mode tables and silhouettes.
+inline ModelLutOptions options_with(PartSplit parts) {
+  ModelLutOptions options;
+  options.parts = parts;
+  return options;
+}
+
+// The coarse default cell with its model-mode tables and silhouettes, the cameras voting on the
+// robot parts of `parts`.
 struct CoarseTables {
+  explicit CoarseTables(PartSplit parts = ModelLutOptions{}.parts) : options(options_with(parts)) {}
+  ModelLutOptions options;
   CellModel cell = coarse_default_cell();
   CspaceGrid grid = make_grid(cell.config);
-  LutSet luts = build_model_luts(cell, grid);
-  ModelSilhouettes silhouettes{cell, grid, ModelLutOptions{}};
+  LutSet luts = build_model_luts(cell, grid, options);
+  ModelSilhouettes silhouettes{cell, grid, options};
 };
 
 // A configuration anywhere inside the cell (joints kept whole: anywhere in their range).

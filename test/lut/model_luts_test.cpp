@@ -36,7 +36,7 @@ class ModelLuts : public ::testing::Test {
   static std::vector<CellToPixelsTable> cell_tables(unsigned threads = 2) {
     CellTableBuild build;
     build.cell_count = grid_->cell_count();
-    build.camera_count = cell_->cameras.size();
+    build.table_count = cell_->cameras.size();
     build.columns = cell_->feature_grid.columns();
     build.rows = cell_->feature_grid.rows();
     build.threads = threads;
@@ -56,32 +56,37 @@ ModelSilhouettes* ModelLuts::silhouettes_ = nullptr;
 
 // Every vertex of the robot's tessellated collision shapes, at random configurations inside
 // random cells, lies in a ball of the cell's envelope.
+// With `bodies`, the envelope of those bodies holds their shapes.
 void expect_envelope_holds_robot(const CellModel& cell, const CspaceGrid& grid,
-                                 const CellEnvelope& envelope, int iterations) {
+                                 const CellEnvelope& envelope, int iterations,
+                                 BodyRange bodies = {}) {
   test::PropertyRun run(iterations);
   std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
   std::vector<Ball> balls;
   for (int i = 0; i < run.iterations(); ++i) {
     const CellIndex index = any_cell(run.rng());
-    envelope.balls_of_cell(grid.coords_of(index).value(), balls);
+    envelope.balls_of_bodies(grid.coords_of(index).value(), bodies.first, bodies.end, balls);
     const auto q = test::configuration_in(grid, index, run.rng());
-    for (const auto& shape : collision_shapes_at(*cell.robot, q)) {
+    for (const auto& shape :
+         collision_shapes_at(*cell.robot, q, Eigen::Isometry3d::Identity(), bodies)) {
       const TriangleMesh mesh = tessellate(shape);
       for (const auto& point : mesh.vertices) {
         const bool inside = std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
           return (point - ball.centre_m).norm() <= ball.radius_m + 1e-9;
         });
-        ASSERT_TRUE(inside) << "cell " << index << " point " << point.transpose();
+        ASSERT_TRUE(inside) << "cell " << index << " bodies " << bodies.first << ".." << bodies.end
+                            << " point " << point.transpose();
       }
     }
   }
 }
 
 CellEnvelope envelope_with_head(const CellModel& cell, const CspaceGrid& grid,
-                                std::size_t max_head_prefixes) {
+                                std::size_t max_head_prefixes,
+                                std::vector<std::size_t> part_starts = {}) {
   const ModelLutOptions options;
   return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                      options.padding_m, max_head_prefixes);
+                      options.padding_m, std::move(part_starts), max_head_prefixes);
 }
 
 TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {
@@ -96,6 +101,68 @@ TEST_F(ModelLuts, EnvelopeFromTailTablesHoldsTheRobotAnywhereInTheCell) {
     ASSERT_GT(envelope.tail_table_balls(), 0u) << "head of up to " << max_head_prefixes;
     ASSERT_LT(envelope.tail_body(), envelope.body_count());
     expect_envelope_holds_robot(*cell_, *grid_, envelope, 150);
+  }
+}
+
+TEST_F(ModelLuts, EachPartsEnvelopeHoldsItsBodies) {
+  // Heads from the base joint on, so that the tail tables are cut where the parts begin.
+  for (const PartSplit split : {PartSplit::kPerLink, PartSplit::kArmSegments}) {
+    std::vector<std::size_t> starts;
+    const std::vector<RobotPart> parts = robot_parts(*cell_->robot, split);
+    for (const RobotPart& part : parts) starts.push_back(part.first_body);
+    for (const std::size_t max_head_prefixes : {std::size_t{1}, std::size_t{300}}) {
+      const CellEnvelope envelope = envelope_with_head(*cell_, *grid_, max_head_prefixes, starts);
+      ASSERT_GT(envelope.tail_table_balls(), 0u);
+      for (const RobotPart& part : parts) {
+        SCOPED_TRACE(std::string(to_string(split)) + ", part " + part.name + ", head of up to " +
+                     std::to_string(max_head_prefixes));
+        expect_envelope_holds_robot(*cell_, *grid_, envelope, 60,
+                                    BodyRange{part.first_body, part.end_body});
+      }
+    }
+  }
+  EXPECT_THROW(envelope_with_head(*cell_, *grid_, 300, {cell_->robot->dof() + 1}),
+               std::invalid_argument);
+}
+
+TEST_F(ModelLuts, PartSilhouettesHoldTheRenderedPartAndUniteToTheRobot) {
+  SimulatedCell sim = simulate_cell(*cell_, SensorSettings{});
+  const FeatureGrid& features = cell_->feature_grid;
+  const std::size_t cameras = cell_->cameras.size();
+  for (const PartSplit split : {PartSplit::kPerLink, PartSplit::kArmSegments}) {
+    const ModelSilhouettes silhouettes(*cell_, *grid_, test::options_with(split));
+    const std::vector<RobotPart>& parts = silhouettes.parts();
+    test::PropertyRun run(10);
+    std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+    for (int i = 0; i < run.iterations(); ++i) {
+      const CellIndex index = any_cell(run.rng());
+      const auto q = test::configuration_in(*grid_, index, run.rng());
+      std::vector<FeatureMask> whole(cameras, FeatureMask(features));
+      silhouettes.add_silhouettes(index, whole);
+      std::vector<FeatureMask> united(cameras, FeatureMask(features));
+      for (std::size_t p = 0; p < parts.size(); ++p) {
+        std::vector<FeatureMask> part(cameras, FeatureMask(features));
+        silhouettes.add_part_silhouettes(index, p, part.data());
+        for (std::size_t camera = 0; camera < cameras; ++camera) {
+          united[camera] |= part[camera];
+          const cv::Mat covered =
+              sim.robot_coverage(camera, q, BodyRange{parts[p].first_body, parts[p].end_body});
+          for (int y = 0; y < covered.rows; ++y) {
+            for (int x = 0; x < covered.cols; ++x) {
+              if (covered.at<std::uint8_t>(y, x) == 0) continue;
+              ASSERT_TRUE(
+                  part[camera].test(x / features.cell_width_px(), y / features.cell_height_px()))
+                  << to_string(split) << ", part " << parts[p].name << ", camera " << camera
+                  << " pixel " << x << "," << y << " cell " << index;
+            }
+          }
+        }
+      }
+      for (std::size_t camera = 0; camera < cameras; ++camera) {
+        ASSERT_EQ(united[camera], whole[camera]) << to_string(split) << ", cell " << index;
+      }
+    }
+    EXPECT_THROW(silhouettes.add_part_silhouettes(0, parts.size(), nullptr), std::out_of_range);
   }
 }
 
@@ -140,8 +207,8 @@ TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {
   for (const std::size_t budget : {std::size_t{256} << 20, std::size_t{1} << 16}) {
     PixelTableBuild build;
     build.memory_budget_bytes = budget;  // the small budget makes one band per feature row
-    const PixelTables pyramid = build_pixel_to_cells_tables(tables[0], *grid_, build);
-    const PixelToCellsTable& pixels = pyramid.pixels;
+    const PartLuts pyramid = build_pixel_to_cells_tables(tables[0], *grid_, build);
+    const PixelToCellsTable& pixels = pyramid.pixel_to_cells;
     std::vector<CellSet> oracle(pixels.pixel_count(), CellSet(grid_->cell_count()));
     for (CellIndex cell = 0; cell < grid_->cell_count(); ++cell) {
       const FeatureMask mask = tables[0].mask_of(cell);
@@ -159,9 +226,9 @@ TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {
       ASSERT_EQ(decoded, oracle[pixel]) << "pixel " << pixel << " budget " << budget;
     }
     // Every block of the pyramid holds exactly the union of its pixels' cells.
-    ASSERT_EQ(pyramid.blocks.size(), 3U);
-    for (std::size_t level = 1; level <= pyramid.blocks.size(); ++level) {
-      const PixelToCellsTable& blocks = pyramid.blocks[level - 1];
+    ASSERT_EQ(pyramid.pixel_blocks.size(), 3U);
+    for (std::size_t level = 1; level <= pyramid.pixel_blocks.size(); ++level) {
+      const PixelToCellsTable& blocks = pyramid.pixel_blocks[level - 1];
       const int size = 1 << level;
       for (int y = 0; y < blocks.rows(); ++y) {
         for (int x = 0; x < blocks.columns(); ++x) {
@@ -223,6 +290,10 @@ TEST_F(ModelLuts, SetCarriesTheFingerprintOfItsInputs) {
   CellModel moved = *cell_;
   moved.obstacles[0].pose.translation().x() += 0.01;
   EXPECT_NE(model_lut_fingerprint(moved, *grid_, ModelLutOptions{}), set.fingerprint);
+  EXPECT_NE(model_lut_fingerprint(*cell_, *grid_, test::options_with(PartSplit::kPerLink)),
+            set.fingerprint);
+  EXPECT_EQ(set.parts.size(), robot_parts(*cell_->robot, ModelLutOptions{}.parts).size());
+  for (const CameraLuts& camera : set.cameras) EXPECT_EQ(camera.parts.size(), set.parts.size());
 }
 
 TEST_F(ModelLuts, AbsurdInputsAreRefused) {
@@ -231,6 +302,9 @@ TEST_F(ModelLuts, AbsurdInputsAreRefused) {
   EXPECT_THROW(ModelSilhouettes(*cell_, *grid_, options), std::invalid_argument);
   options = ModelLutOptions{};
   options.padding_m = -0.1;
+  EXPECT_THROW(ModelSilhouettes(*cell_, *grid_, options), std::invalid_argument);
+  options = ModelLutOptions{};
+  options.parts = static_cast<PartSplit>(9);
   EXPECT_THROW(ModelSilhouettes(*cell_, *grid_, options), std::invalid_argument);
   CellModel no_camera = *cell_;
   no_camera.cameras.clear();

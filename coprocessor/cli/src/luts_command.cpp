@@ -83,6 +83,11 @@ nlohmann::ordered_json summary_json(const fs::path& path, const LutFileSummary& 
   report["cells"] = summary.cell_count;
   report["feature_grid"] = {summary.columns, summary.rows};
   report["file_bytes"] = summary.file_bytes;
+  nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+  for (const RobotPart& part : summary.parts) {
+    parts.push_back({{"name", part.name}, {"bodies", {part.first_body, part.end_body}}});
+  }
+  report["robot_parts"] = std::move(parts);
   report["bytes_per_camera"] = static_cast<double>(stored) / camera_count;
   report["uncompressed_bytes_per_camera"] = static_cast<double>(uncompressed) / camera_count;
   report["paper_bytes_per_camera"] = kPaperBytesPerCamera;
@@ -101,7 +106,14 @@ void print_summary(const nlohmann::ordered_json& report, std::ostream& out) {
       << "  " << grouped(report["cells"].get<unsigned long long>()) << " C-space cells, "
       << report["feature_grid"][0].get<int>() << " x " << report["feature_grid"][1].get<int>()
       << " feature cells, " << report["cameras"].size() << " cameras, "
-      << megabytes(report["file_bytes"].get<std::uint64_t>()) << " MB on disk\n";
+      << megabytes(report["file_bytes"].get<std::uint64_t>()) << " MB on disk\n"
+      << "  LUT-2 per robot part (the cameras vote per part):";
+  for (const auto& part : report["robot_parts"]) {
+    out << " " << part["name"].get<std::string>() << " [bodies "
+        << part["bodies"][0].get<std::size_t>() << ".." << part["bodies"][1].get<std::size_t>() - 1
+        << "];";
+  }
+  out << "\n";
   using Align = TextTable::Align;
   TextTable table({{"camera", Align::kLeft},
                    {"LUT-1 [MB]", Align::kRight},

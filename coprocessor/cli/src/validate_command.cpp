@@ -30,6 +30,14 @@ RobotRemoval removal_of(const std::string& text) {
   bad_option("--removal", text, "occlusion-aware or plain");
 }
 
+PartSplit parts_of(const std::string& text) {
+  PartSplit split = PartSplit::kArmSegments;
+  if (!parse_part_split(text, split)) {
+    bad_option("--robot-parts", text, "arm-segments, per-link or whole-robot");
+  }
+  return split;
+}
+
 NegativeControl control_of(const std::string& text) {
   if (const auto control = negative_control_named(text)) return *control;
   bad_option("--negative-control", text, "none, empty-masks, dropped-strip or envelope-removal");
@@ -66,7 +74,8 @@ std::string percent(double share) { return fixed(100.0 * share, 2) + " %"; }
 void print_report(const ValidationRun& run, const ValidationReport& report, std::ostream& out) {
   out << "validated " << grouped(report.scenes) << " scenes (seed " << run.seed << ", shards "
       << run.shards.size() << " of " << run.shard_count << ", " << run.removal
-      << " robot removal, camera threshold " << run.camera_threshold << ")"
+      << " robot removal, camera threshold " << run.camera_threshold << ", cameras voting per "
+      << run.robot_parts << ")"
       << (run.negative_control == "none" ? "" : ", NEGATIVE CONTROL " + run.negative_control)
       << "\n  " << grouped(report.configs_checked)
       << " configurations against FCL and the renderer's object ids: colliding "
@@ -135,7 +144,8 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   if (options.camera_threshold > 0) config.camera_threshold = options.camera_threshold;
   const CellModel cell = load_cell_model(std::move(config));
   const CspaceGrid grid = make_grid(cell.config);
-  const ModelLutOptions tables{options.ball_radius_m, options.padding_m};
+  ModelLutOptions tables{options.ball_radius_m, options.padding_m};
+  tables.parts = parts_of(options.robot_parts);
   ValidationOptions validation;
   validation.scenes = options.scenes;
   validation.seed = options.seed;
@@ -166,6 +176,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   run.negative_control = options.negative_control;
   run.padding_m = options.padding_m;
   run.ball_radius_m = options.ball_radius_m;
+  run.robot_parts = options.robot_parts;
   run.m_max_m = cell.config.m_max_m;
   run.model_error = validation.model_error;
   run.shard_count = validation.shard.count;
@@ -256,6 +267,11 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
                    "Size of the balls covering the robot, metres")
       ->capture_default_str()
       ->check(CLI::Range(0.005, 0.5));
+  validate_command
+      ->add_option("--robot-parts", validate->robot_parts,
+                   "The robot parts the cameras vote on: arm-segments (base | links 1-2 | the "
+                   "rest), per-link or whole-robot (the paper's vote)")
+      ->capture_default_str();
   validate_command
       ->add_option("--m-max", validate->m_max_m,
                    "Max-move m_max of the C-space grid, metres (default: the cell's)")

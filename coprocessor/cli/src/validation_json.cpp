@@ -58,8 +58,9 @@ bool same_run(const ValidationRun& a, const ValidationRun& b) {
          a.configurations_per_scene == b.configurations_per_scene &&
          a.camera_threshold == b.camera_threshold && a.removal == b.removal &&
          a.negative_control == b.negative_control && a.padding_m == b.padding_m &&
-         a.ball_radius_m == b.ball_radius_m && a.m_max_m == b.m_max_m &&
-         same_error(a.model_error, b.model_error) && a.shard_count == b.shard_count;
+         a.ball_radius_m == b.ball_radius_m && a.robot_parts == b.robot_parts &&
+         a.m_max_m == b.m_max_m && same_error(a.model_error, b.model_error) &&
+         a.shard_count == b.shard_count;
 }
 
 nlohmann::ordered_json validation_json(const ValidationRun& run, const ValidationReport& report) {
@@ -108,6 +109,7 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["negative_control"] = run.negative_control;
   json["padding_m"] = run.padding_m;
   json["ball_radius_m"] = run.ball_radius_m;
+  json["robot_parts"] = run.robot_parts;
   json["m_max_m"] = run.m_max_m;
   json["model_error"] = {{"camera_rotation_deg", run.model_error.camera_rotation_deg},
                          {"camera_translation_m", run.model_error.camera_translation_m},
@@ -188,6 +190,10 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
   run.negative_control = field<std::string>(json, "negative_control", source);
   run.padding_m = field<double>(json, "padding_m", source);
   run.ball_radius_m = field<double>(json, "ball_radius_m", source);
+  // Reports written before the vote per part have no such field: their cameras voted on the
+  // whole robot.
+  run.robot_parts = json.contains("robot_parts") ? field<std::string>(json, "robot_parts", source)
+                                                 : std::string("whole-robot");
   run.m_max_m = field<double>(json, "m_max_m", source);
   const auto error = field<nlohmann::json>(json, "model_error", source);
   run.model_error.camera_rotation_deg = field<double>(error, "camera_rotation_deg", source);

@@ -66,7 +66,8 @@ struct CellEnvelope::CellFrames {
 };
 
 CellEnvelope::CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid,
-                           double padding_m, std::size_t max_head_prefixes)
+                           double padding_m, std::vector<std::size_t> part_starts,
+                           std::size_t max_head_prefixes)
     : robot_(robot), robot_balls_(std::move(balls)), grid_(grid), padding_m_(padding_m) {
   if (grid.joint_count() != robot.dof()) {
     throw std::invalid_argument("the C-space grid has " + std::to_string(grid.joint_count()) +
@@ -81,7 +82,13 @@ CellEnvelope::CellEnvelope(const RobotModel& robot, RobotBalls balls, const Cspa
     throw std::invalid_argument("padding must be finite and >= 0 m, got " +
                                 std::to_string(padding_m));
   }
-  make_tail_tables(max_head_prefixes);
+  for (const std::size_t start : part_starts) {
+    if (start >= body_count()) {
+      throw std::invalid_argument("a robot part begins at body " + std::to_string(start) +
+                                  ", the robot has " + std::to_string(body_count()) + " bodies");
+    }
+  }
+  make_tail_tables(max_head_prefixes, part_starts);
 }
 
 std::size_t CellEnvelope::prefix_count(std::size_t body) const {
@@ -98,10 +105,15 @@ std::size_t CellEnvelope::prefix_of(const GridCoords& coords, std::size_t body) 
   return prefix;
 }
 
-void CellEnvelope::make_tail_tables(std::size_t max_head_prefixes) {
+void CellEnvelope::make_tail_tables(std::size_t max_head_prefixes,
+                                    const std::vector<std::size_t>& part_starts) {
   tail_body_ = 1;  // the base has no joint before it: always the head
   while (tail_body_ < body_count() && prefix_count(tail_body_) <= max_head_prefixes) ++tail_body_;
   if (tail_body_ == body_count()) return;
+  segment_starts_ = {tail_body_};
+  for (const std::size_t start : part_starts) {
+    if (start > segment_starts_.back()) segment_starts_.push_back(start);
+  }
   const std::size_t first_link = tail_body_ - 1;
   std::size_t suffixes = 1;
   for (std::size_t joint = first_link + 1; joint < grid_.joint_count(); ++joint) {
@@ -112,7 +124,7 @@ void CellEnvelope::make_tail_tables(std::size_t max_head_prefixes) {
     balls_per_suffix += robot_balls_.links[link].size();
   }
   if (suffixes * balls_per_suffix > kMaxTailBalls) return;
-  tail_tables_.resize(suffixes);
+  tail_tables_.assign(segment_starts_.size(), std::vector<std::vector<Ball>>(suffixes));
   std::vector<Ball> swept;
   for (std::size_t suffix = 0; suffix < suffixes; ++suffix) {
     GridCoords coords;  // the head's joints at their first cell: they do not enter
@@ -123,12 +135,21 @@ void CellEnvelope::make_tail_tables(std::size_t max_head_prefixes) {
       rest /= cells;
     }
     const CellFrames& frames = frames_of(coords);
-    swept.clear();
-    append_link_balls(frames, tail_body_, body_count(), first_link, swept);
     const Eigen::Isometry3d to_link = frames.poses[first_link].inverse();
-    for (Ball& ball : swept) ball.centre_m = to_link * ball.centre_m;
-    tail_tables_[suffix] = without_covered_balls(swept);
+    for (std::size_t segment = 0; segment < segment_starts_.size(); ++segment) {
+      const std::size_t end =
+          segment + 1 < segment_starts_.size() ? segment_starts_[segment + 1] : body_count();
+      swept.clear();
+      append_link_balls(frames, segment_starts_[segment], end, first_link, swept);
+      for (Ball& ball : swept) ball.centre_m = to_link * ball.centre_m;
+      tail_tables_[segment][suffix] = without_covered_balls(swept);
+    }
   }
+}
+
+std::size_t CellEnvelope::segment_starting_at(std::size_t body) const {
+  const auto found = std::find(segment_starts_.begin(), segment_starts_.end(), body);
+  return static_cast<std::size_t>(found - segment_starts_.begin());
 }
 
 std::size_t CellEnvelope::suffix_of(const GridCoords& coords) const {
@@ -141,7 +162,9 @@ std::size_t CellEnvelope::suffix_of(const GridCoords& coords) const {
 
 std::size_t CellEnvelope::tail_table_balls() const {
   std::size_t count = 0;
-  for (const auto& table : tail_tables_) count += table.size();
+  for (const auto& segment : tail_tables_) {
+    for (const auto& table : segment) count += table.size();
+  }
   return count;
 }
 
@@ -156,18 +179,30 @@ void CellEnvelope::append_body_balls(std::size_t body, std::size_t prefix,
 }
 
 void CellEnvelope::balls_of_bodies(const GridCoords& coords, std::size_t first_body,
-                                   std::vector<Ball>& balls) const {
+                                   std::size_t end_body, std::vector<Ball>& balls) const {
   balls.clear();
+  end_body = std::min(end_body, body_count());
+  if (first_body >= end_body) return;
   const CellFrames& frames = frames_of(coords);
-  const bool from_tables = !tail_tables_.empty() && first_body <= tail_body_;
-  append_link_balls(frames, first_body, from_tables ? tail_body_ : body_count(), 0, balls);
+  const std::size_t tail_first = std::max(first_body, tail_body_);
+  const std::size_t first_segment = segment_starting_at(tail_first);
+  const std::size_t end_segment =
+      end_body == body_count() ? segment_starts_.size() : segment_starting_at(end_body);
+  // Tables only for whole segments: the range must begin and end at their bounds.
+  const bool from_tables = !tail_tables_.empty() && tail_first < end_body &&
+                           first_segment < end_segment &&
+                           (end_body == body_count() || end_segment < segment_starts_.size());
+  append_link_balls(frames, first_body, from_tables ? tail_first : end_body, 0, balls);
   if (!from_tables) return;
   const std::size_t first_link = tail_body_ - 1;
   const Eigen::Isometry3d& pose = frames.poses[first_link];
-  for (const Ball& local : tail_tables_[suffix_of(coords)]) {
-    Ball ball{pose * local.centre_m, local.radius_m};
-    for (std::size_t k = first_link; k-- > 0;) sweep(frames.axes[k], ball);
-    balls.push_back(ball);
+  const std::size_t suffix = suffix_of(coords);
+  for (std::size_t segment = first_segment; segment < end_segment; ++segment) {
+    for (const Ball& local : tail_tables_[segment][suffix]) {
+      Ball ball{pose * local.centre_m, local.radius_m};
+      for (std::size_t k = first_link; k-- > 0;) sweep(frames.axes[k], ball);
+      balls.push_back(ball);
+    }
   }
 }
 

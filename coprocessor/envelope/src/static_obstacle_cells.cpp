@@ -53,7 +53,7 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
             hit = cached[body][envelope.prefix_of(coords, body)];
           }
           if (!hit) {
-            envelope.balls_of_bodies(coords, cached_bodies, balls);
+            envelope.balls_of_bodies(coords, cached_bodies, envelope.body_count(), balls);
             hit = touches(balls);
           }
           if (hit) hits.push_back(static_cast<CellIndex>(cell));

@@ -19,13 +19,17 @@ BaselineFusion::BaselineFusion(const LutSet& luts, const RobotSilhouettes& silho
                                 " outside 1.." + std::to_string(luts.cameras.size()));
   }
   const std::uint32_t cells = luts.static_cells.cell_count();
-  for (const auto& camera : luts.cameras) {
-    const CellSet seen = observable_cells(camera.pixel_to_cells);
-    std::vector<CellIndex> list;
-    for (CellIndex cell = seen.next_set(0); cell < cells; cell = seen.next_set(cell + 1)) {
-      list.push_back(cell);
+  for (std::size_t part = 0; part < luts.parts.size(); ++part) {
+    for (const auto& camera : luts.cameras) {
+      const CellSet seen = observable_cells(camera.parts.at(part).pixel_to_cells);
+      std::vector<CellIndex> list;
+      for (CellIndex cell = seen.next_set(0); cell < cells; cell = seen.next_set(cell + 1)) {
+        list.push_back(cell);
+      }
+      observable_.push_back(std::move(list));
     }
-    observable_.push_back(std::move(list));
+  }
+  for (std::size_t camera = 0; camera < luts.cameras.size(); ++camera) {
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
   }
@@ -49,41 +53,44 @@ const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observ
   if (robot_cell >= counters_.size()) throw std::out_of_range("robot cell outside the grid");
   remove_robot_from_views(observations, {silhouettes_, nullptr, robot_cell, {}}, settings_, robot_,
                           obstacles_);
-  std::fill(counters_.begin(), counters_.end(), 0);
-  std::fill(stamps_.begin(), stamps_.end(), 0);
-  for (std::size_t camera = 0; camera < observations.size(); ++camera) {
-    const auto stamp = static_cast<std::uint8_t>(camera + 1);
-    if (!observations[camera].known) {
-      for (const CellIndex cell : observable_[camera]) count_cell(cell, stamp);
-      continue;
-    }
-    const FeatureMask& obstacles = obstacles_[camera];
-    const PixelToCellsTable& table = luts_.cameras[camera].pixel_to_cells;
-    for (int row = 0; row < obstacles.rows(); ++row) {
-      for (int column = 0; column < obstacles.columns(); ++column) {
-        if (!obstacles.test(column, row)) continue;
-        const std::size_t pixel =
-            static_cast<std::size_t>(row) * static_cast<std::size_t>(obstacles.columns()) +
-            static_cast<std::size_t>(column);
-        // The pixel's cells each once, as the paper's list holds them: its runs may overlap,
-        // so they are gathered first.
-        pixel_cells_.clear();
-        table.add_cells(pixel, pixel_cells_);
-        const std::vector<std::uint64_t>& words = pixel_cells_.words();
-        for (std::size_t word = 0; word < words.size(); ++word) {
-          for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
-            count_cell(static_cast<CellIndex>(word * 64 +
-                                              static_cast<std::size_t>(std::countr_zero(bits))),
-                       stamp);
+  forbidden_ = luts_.static_cells;
+  const auto threshold = static_cast<std::uint8_t>(settings_.camera_threshold);
+  const std::size_t cameras = observations.size();
+  for (std::size_t part = 0; part < luts_.parts.size(); ++part) {
+    std::fill(counters_.begin(), counters_.end(), 0);
+    std::fill(stamps_.begin(), stamps_.end(), 0);
+    for (std::size_t camera = 0; camera < cameras; ++camera) {
+      const auto stamp = static_cast<std::uint8_t>(camera + 1);
+      if (!observations[camera].known) {
+        for (const CellIndex cell : observable_[part * cameras + camera]) count_cell(cell, stamp);
+        continue;
+      }
+      const FeatureMask& obstacles = obstacles_[camera];
+      const PixelToCellsTable& table = luts_.cameras[camera].parts[part].pixel_to_cells;
+      for (int row = 0; row < obstacles.rows(); ++row) {
+        for (int column = 0; column < obstacles.columns(); ++column) {
+          if (!obstacles.test(column, row)) continue;
+          const std::size_t pixel =
+              static_cast<std::size_t>(row) * static_cast<std::size_t>(obstacles.columns()) +
+              static_cast<std::size_t>(column);
+          // The pixel's cells each once, as the paper's list holds them: its runs may overlap,
+          // so they are gathered first.
+          pixel_cells_.clear();
+          table.add_cells(pixel, pixel_cells_);
+          const std::vector<std::uint64_t>& words = pixel_cells_.words();
+          for (std::size_t word = 0; word < words.size(); ++word) {
+            for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+              count_cell(static_cast<CellIndex>(word * 64 +
+                                                static_cast<std::size_t>(std::countr_zero(bits))),
+                         stamp);
+            }
           }
         }
       }
     }
-  }
-  forbidden_.clear();
-  const auto threshold = static_cast<std::uint8_t>(settings_.camera_threshold);
-  for (CellIndex cell = 0; cell < counters_.size(); ++cell) {
-    if (counters_[cell] >= threshold || luts_.static_cells.test(cell)) forbidden_.set(cell);
+    for (CellIndex cell = 0; cell < counters_.size(); ++cell) {
+      if (counters_[cell] >= threshold) forbidden_.set(cell);
+    }
   }
   return forbidden_;
 }

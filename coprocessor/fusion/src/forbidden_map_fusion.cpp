@@ -38,6 +38,14 @@ CellSet observable_cells(const PixelToCellsTable& table) {
   return cells;
 }
 
+CellSet observable_cells(const CameraLuts& camera) {
+  if (camera.parts.empty())
+    throw std::invalid_argument("camera '" + camera.camera + "' has no LUT-2");
+  CellSet cells(camera.parts.front().pixel_to_cells.cell_count());
+  for (const PartLuts& part : camera.parts) cells |= observable_cells(part.pixel_to_cells);
+  return cells;
+}
+
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
                              const RobotAtExposure& where, const FusionSettings& settings,
                              std::vector<FeatureMask>& robot, std::vector<FeatureMask>& obstacles) {
@@ -87,52 +95,83 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     throw std::invalid_argument("occlusion reach must be >= 0 feature cells, got " +
                                 std::to_string(settings.occlusion_reach));
   }
+  if (luts.parts.empty()) throw std::invalid_argument("the tables name no robot part");
   const std::uint32_t cells = luts.static_cells.cell_count();
-  for (const auto& camera : luts.cameras) {
-    if (camera.pixel_to_cells.cell_count() != cells) {
-      throw std::invalid_argument("LUT-2 of camera '" + camera.camera + "' is of another grid");
-    }
-    for (const auto& neighbour : camera.differences) {
-      if (neighbour.size() > camera.pixel_blocks.size() + 1) {
-        throw std::invalid_argument("LUT-2 of camera '" + camera.camera +
-                                    "' has differences for levels it lacks");
+  const std::size_t cameras = luts.cameras.size();
+  observable_.resize(luts.parts.size() * cameras);
+  for (std::size_t part = 0; part < luts.parts.size(); ++part) {
+    for (std::size_t camera = 0; camera < cameras; ++camera) {
+      const std::string& name = luts.cameras[camera].camera;
+      if (luts.cameras[camera].parts.size() != luts.parts.size()) {
+        throw std::invalid_argument("camera '" + name + "' has LUT-2 for " +
+                                    std::to_string(luts.cameras[camera].parts.size()) +
+                                    " robot parts, the set names " +
+                                    std::to_string(luts.parts.size()));
       }
-      for (std::size_t level = 0; level < neighbour.size(); ++level) {
-        const PixelToCellsTable& entries = camera.entries_of_level(level);
-        const PixelToCellsTable& differences = neighbour[level];
-        if (differences.cell_count() != cells || differences.columns() != entries.columns() ||
-            differences.rows() != entries.rows()) {
-          throw std::invalid_argument("LUT-2 differences of camera '" + camera.camera +
-                                      "' at level " + std::to_string(level) +
-                                      " do not fit its entries");
+      const PartLuts& tables = luts.cameras[camera].parts[part];
+      const std::string where = "LUT-2 of camera '" + name + "', part '" + luts.parts[part].name;
+      if (tables.pixel_to_cells.cell_count() != cells ||
+          tables.pixel_to_cells.columns() != luts.columns ||
+          tables.pixel_to_cells.rows() != luts.rows) {
+        throw std::invalid_argument(where + "' is of another grid");
+      }
+      for (const auto& neighbour : tables.differences) {
+        if (neighbour.size() > tables.pixel_blocks.size() + 1) {
+          throw std::invalid_argument(where + "' has differences for levels it lacks");
+        }
+        for (std::size_t level = 0; level < neighbour.size(); ++level) {
+          const PixelToCellsTable& entries = tables.entries_of_level(level);
+          const PixelToCellsTable& differences = neighbour[level];
+          if (differences.cell_count() != cells || differences.columns() != entries.columns() ||
+              differences.rows() != entries.rows()) {
+            throw std::invalid_argument(where + "': differences at level " + std::to_string(level) +
+                                        " do not fit its entries");
+          }
         }
       }
+      suspicious_lines_.emplace_back(tables.pixel_to_cells.axes(), cells);
+      observable_lines_.emplace_back(tables.pixel_to_cells.axes(), cells);
+      FeatureMask reach(luts.columns, luts.rows);
+      for (std::size_t pixel = 0; pixel < tables.pixel_to_cells.pixel_count(); ++pixel) {
+        if (tables.pixel_to_cells.entry_bytes(pixel) == 0) continue;
+        tables.pixel_to_cells.add_cells(pixel, observable_lines_.back());
+        reach.set(static_cast<int>(pixel % static_cast<std::size_t>(luts.columns)),
+                  static_cast<int>(pixel / static_cast<std::size_t>(luts.columns)));
+      }
+      reach_.push_back(std::move(reach));
+      CellSet& seen = observable_[slot(part, camera)];
+      seen = CellSet(cells);
+      observable_lines_.back().pack_into(seen);  // folds it, too
     }
-    suspicious_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
-    observable_lines_.emplace_back(camera.pixel_to_cells.axes(), cells);
-    for (std::size_t pixel = 0; pixel < camera.pixel_to_cells.pixel_count(); ++pixel) {
-      camera.pixel_to_cells.add_cells(pixel, observable_lines_.back());
+  }
+  for (std::size_t camera = 0; camera < cameras; ++camera) {
+    observable_any_part_.emplace_back(cells);
+    for (std::size_t part = 0; part < luts.parts.size(); ++part) {
+      observable_any_part_.back() |= observable_[slot(part, camera)];
     }
-    observable_.emplace_back(cells);
-    observable_lines_.back().pack_into(observable_.back());  // folds it, too
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
     remaining_.emplace_back(luts.columns, luts.rows);
   }
-  camera_lines_.reserve(luts.cameras.size());
+  camera_lines_.reserve(cameras);
+  voters_.assign(cameras, false);
   const std::size_t words = observable_lines_.front().lines().size();
   at_least_.assign(static_cast<std::size_t>(settings.camera_threshold),
                    std::vector<std::uint64_t>(words, 0));
+  part_critical_lines_.assign(words, 0);
   critical_lines_.assign(words, 0);
   critical_ = CellSet(cells);
   forbidden_ = CellSet(cells);
-  counts_.obstacle_pixels.assign(luts.cameras.size(), 0);
-  counts_.saturated.assign(luts.cameras.size(), false);
+  counts_.obstacle_pixels.assign(cameras, 0);
+  counts_.saturated.assign(luts.parts.size() * cameras, false);
+  counts_.part_voted.assign(luts.parts.size(), false);
+  counts_.part_critical.assign(luts.parts.size(), false);
 }
 
-CellSet ForbiddenMapFusion::suspicious(std::size_t camera) const {
+CellSet ForbiddenMapFusion::suspicious(std::size_t part, std::size_t camera) const {
+  const CellLines& lines = suspicious_lines_.at(slot(part, camera));
   CellSet cells(critical_.cell_count());
-  suspicious_lines_.at(camera).pack_lines(suspicious_lines_.at(camera).lines(), cells);
+  lines.pack_lines(lines.lines(), cells);
   return cells;
 }
 
@@ -154,10 +193,22 @@ void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observation
   }
 }
 
-bool ForbiddenMapFusion::back_project(std::size_t camera) {
-  CellLines& suspicious = suspicious_lines_[camera];
+std::size_t ForbiddenMapFusion::find_voters(const std::vector<CameraObservation>& observations,
+                                            std::size_t part) {
+  std::size_t count = 0;
+  for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+    voters_[camera] =
+        !observations[camera].known || obstacles_[camera].intersects(reach_[slot(part, camera)]);
+    if (voters_[camera]) ++count;
+  }
+  return count;
+}
+
+bool ForbiddenMapFusion::back_project(std::size_t part, std::size_t camera) {
+  CellLines& suspicious = suspicious_lines_[slot(part, camera)];
   suspicious.clear();
-  const CameraLuts& tables = luts_.cameras[camera];
+  const PartLuts& tables = luts_.cameras[camera].parts[part];
+  CellLines& observable = observable_lines_[slot(part, camera)];
   FeatureMask& remaining = remaining_[camera];
   remaining = obstacles_[camera];
   // Once the set holds every cell the camera can see, no pixel can add to it. Testing that costs
@@ -169,7 +220,7 @@ bool ForbiddenMapFusion::back_project(std::size_t camera) {
     lines_since_check += table.add_cells(entry, suspicious);
     if (lines_since_check < 2 * suspicious.line_count()) return false;
     lines_since_check = 0;
-    return suspicious.contains(observable_lines_[camera]);
+    return suspicious.contains(observable);
   };
   const FeatureMask& obstacles = obstacles_[camera];
   // An entry whose left or upper neighbour (of its level) is all obstacles adds only its
@@ -235,22 +286,38 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
   }
   remove_robot_from_views(observations, {silhouettes_, at_configuration_, robot_cell, q}, settings_,
                           robot_, obstacles_);
-  camera_lines_.clear();
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
-    if (!observations[camera].known) {
-      suspicious_lines_[camera].clear();
-      counts_.obstacle_pixels[camera] = 0;
-      counts_.saturated[camera] = false;
-      camera_lines_.push_back(observable_lines_[camera].lines());
-      continue;
-    }
-    counts_.saturated[camera] = back_project(camera);
-    suspicious_lines_[camera].fold();
-    counts_.obstacle_pixels[camera] = obstacles_[camera].count();
-    camera_lines_.push_back(suspicious_lines_[camera].lines());
+    counts_.obstacle_pixels[camera] =
+        observations[camera].known ? obstacles_[camera].count() : std::size_t{0};
   }
-  // Counted in the line layout, so that only the result is packed.
-  count_at_least(camera_lines_, settings_.camera_threshold, at_least_, critical_lines_);
+  std::fill(critical_lines_.begin(), critical_lines_.end(), 0);
+  const auto threshold = static_cast<std::size_t>(settings_.camera_threshold);
+  for (std::size_t part = 0; part < luts_.parts.size(); ++part) {
+    const bool voted = find_voters(observations, part) >= threshold;
+    counts_.part_voted[part] = voted;
+    counts_.part_critical[part] = false;
+    camera_lines_.clear();
+    for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+      const std::size_t at = slot(part, camera);
+      suspicious_lines_[at].clear();
+      counts_.saturated[at] = false;
+      if (!voted || !voters_[camera]) continue;
+      if (!observations[camera].known) {
+        camera_lines_.push_back(observable_lines_[at].lines());
+        continue;
+      }
+      counts_.saturated[at] = back_project(part, camera);
+      suspicious_lines_[at].fold();
+      camera_lines_.push_back(suspicious_lines_[at].lines());
+    }
+    if (!voted) continue;
+    // Counted in the line layout, so that only the result is packed.
+    count_at_least(camera_lines_, settings_.camera_threshold, at_least_, part_critical_lines_);
+    counts_.part_critical[part] =
+        std::any_of(part_critical_lines_.begin(), part_critical_lines_.end(),
+                    [](std::uint64_t word) { return word != 0; });
+    or_words(critical_lines_.data(), part_critical_lines_.data(), critical_lines_.size());
+  }
   observable_lines_.front().pack_lines(critical_lines_, critical_);
   forbidden_.words() = critical_.words();
   forbidden_ |= luts_.static_cells;

@@ -5,7 +5,7 @@ namespace {
 
 constexpr std::size_t kCellsPerChunk = 512;
 
-// What one chunk of cells produced for one camera: rectangles per cell, in cell order.
+// What one chunk of cells produced for one table: rectangles per cell, in cell order.
 struct ChunkRects {
   std::vector<std::uint32_t> counts;
   std::vector<FeatureRect> rects;
@@ -17,20 +17,20 @@ std::vector<CellToPixelsTable> build_cell_to_pixels_tables(const CellTableBuild&
                                                            const CellSilhouettes& silhouettes,
                                                            const ProgressCallback& progress) {
   const std::size_t chunks = (build.cell_count + kCellsPerChunk - 1) / kCellsPerChunk;
-  // chunk_rects[chunk][camera]
+  // chunk_rects[chunk][table]
   std::vector<std::vector<ChunkRects>> chunk_rects(chunks);
   parallel_chunks(
       build.cell_count, kCellsPerChunk, build.threads,
       [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-        std::vector<FeatureMask> masks(build.camera_count, FeatureMask(build.columns, build.rows));
-        std::vector<ChunkRects> out(build.camera_count);
+        std::vector<FeatureMask> masks(build.table_count, FeatureMask(build.columns, build.rows));
+        std::vector<ChunkRects> out(build.table_count);
         for (std::size_t cell = begin; cell < end; ++cell) {
           for (auto& mask : masks) mask.clear();
           silhouettes(static_cast<CellIndex>(cell), masks);
-          for (std::size_t camera = 0; camera < build.camera_count; ++camera) {
-            const auto rects = masks[camera].rectangles();
-            out[camera].counts.push_back(static_cast<std::uint32_t>(rects.size()));
-            out[camera].rects.insert(out[camera].rects.end(), rects.begin(), rects.end());
+          for (std::size_t table = 0; table < build.table_count; ++table) {
+            const auto rects = masks[table].rectangles();
+            out[table].counts.push_back(static_cast<std::uint32_t>(rects.size()));
+            out[table].rects.insert(out[table].rects.end(), rects.begin(), rects.end());
           }
         }
         chunk_rects[chunk] = std::move(out);
@@ -38,20 +38,20 @@ std::vector<CellToPixelsTable> build_cell_to_pixels_tables(const CellTableBuild&
       progress);
 
   std::vector<CellToPixelsTable> tables;
-  tables.reserve(build.camera_count);
-  for (std::size_t camera = 0; camera < build.camera_count; ++camera) {
+  tables.reserve(build.table_count);
+  for (std::size_t table = 0; table < build.table_count; ++table) {
     std::vector<std::uint64_t> offsets;
     offsets.reserve(static_cast<std::size_t>(build.cell_count) + 1);
     offsets.push_back(0);
     std::size_t total = 0;
-    for (const auto& chunk : chunk_rects) total += chunk[camera].rects.size();
+    for (const auto& chunk : chunk_rects) total += chunk[table].rects.size();
     std::vector<FeatureRect> rects;
     rects.reserve(total);
     for (auto& chunk : chunk_rects) {
-      for (const std::uint32_t count : chunk[camera].counts)
+      for (const std::uint32_t count : chunk[table].counts)
         offsets.push_back(offsets.back() + count);
-      rects.insert(rects.end(), chunk[camera].rects.begin(), chunk[camera].rects.end());
-      chunk[camera] = ChunkRects{};
+      rects.insert(rects.end(), chunk[table].rects.begin(), chunk[table].rects.end());
+      chunk[table] = ChunkRects{};
     }
     tables.emplace_back(build.columns, build.rows, std::move(offsets), std::move(rects));
   }

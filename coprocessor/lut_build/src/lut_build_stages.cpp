@@ -2,6 +2,9 @@
 
 #include "safecell/lut_build/pixel_table_builder.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace safecell {
 
 ProgressCallback stage_progress(const StagedProgress& progress, int stage) {
@@ -10,11 +13,12 @@ ProgressCallback stage_progress(const StagedProgress& progress, int stage) {
 }
 
 std::vector<CellToPixelsTable> build_cell_tables(const CellModel& cell, const CspaceGrid& grid,
+                                                 std::size_t part_count,
                                                  const CellSilhouettes& silhouettes,
                                                  unsigned threads, const StagedProgress& progress) {
   CellTableBuild build;
   build.cell_count = grid.cell_count();
-  build.camera_count = cell.cameras.size();
+  build.table_count = part_count * cell.cameras.size();
   build.columns = cell.feature_grid.columns();
   build.rows = cell.feature_grid.rows();
   build.threads = threads;
@@ -22,26 +26,37 @@ std::vector<CellToPixelsTable> build_cell_tables(const CellModel& cell, const Cs
 }
 
 std::vector<CameraLuts> invert_cell_tables(const CellModel& cell, const CspaceGrid& grid,
+                                           std::size_t part_count,
                                            std::vector<CellToPixelsTable> cell_tables,
                                            bool keep_cell_tables, unsigned threads,
                                            const StagedProgress& progress) {
+  const std::size_t cameras = cell.cameras.size();
+  if (cell_tables.size() != part_count * cameras || (keep_cell_tables && part_count != 1)) {
+    throw std::invalid_argument(std::to_string(cell_tables.size()) + " LUT-1 tables for " +
+                                std::to_string(part_count) + " parts and " +
+                                std::to_string(cameras) + " cameras");
+  }
   PixelTableBuild build;
   build.threads = threads;
-  const auto cameras = static_cast<double>(cell.cameras.size());
-  std::vector<CameraLuts> luts;
-  for (std::size_t camera = 0; camera < cell.cameras.size(); ++camera) {
-    const ProgressCallback inversion = [&progress, camera, cameras](double fraction) {
-      if (progress) progress(1, (static_cast<double>(camera) + fraction) / cameras);
-    };
-    PixelTables pixel_tables =
-        build_pixel_to_cells_tables(cell_tables[camera], grid, build, inversion);
-    const std::uint64_t pairs = cell_tables[camera].covered_pairs();
-    luts.push_back(
-        CameraLuts{cell.cameras[camera].name(),
-                   keep_cell_tables ? std::move(cell_tables[camera]) : CellToPixelsTable{},
-                   std::move(pixel_tables.pixels), std::move(pixel_tables.blocks), pairs,
-                   std::move(pixel_tables.differences)});
-    if (!keep_cell_tables) cell_tables[camera] = CellToPixelsTable{};  // free it early
+  const auto tables = static_cast<double>(cell_tables.size());
+  std::vector<CameraLuts> luts(cameras);
+  for (std::size_t camera = 0; camera < cameras; ++camera) {
+    luts[camera].camera = cell.cameras[camera].name();
+  }
+  for (std::size_t part = 0; part < part_count; ++part) {
+    for (std::size_t camera = 0; camera < cameras; ++camera) {
+      const std::size_t table = part * cameras + camera;
+      const ProgressCallback inversion = [&progress, table, tables](double fraction) {
+        if (progress) progress(1, (static_cast<double>(table) + fraction) / tables);
+      };
+      luts[camera].parts.push_back(
+          build_pixel_to_cells_tables(cell_tables[table], grid, build, inversion));
+      if (keep_cell_tables) {
+        luts[camera].cell_to_pixels = std::move(cell_tables[table]);
+      } else {
+        cell_tables[table] = CellToPixelsTable{};  // free it early
+      }
+    }
   }
   return luts;
 }

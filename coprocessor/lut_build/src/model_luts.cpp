@@ -41,6 +41,10 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
   hash.add_double(options.ball_radius_m);
   hash.add_double(options.padding_m);
   const RobotModel& robot = *cell.robot;
+  for (const RobotPart& part : robot_parts(robot, options.parts)) {
+    hash.add_u64(part.first_body);
+    hash.add_u64(part.end_body);
+  }
   for (const auto& joint : robot.joints) {
     add_pose(hash, joint.origin);
     hash.add_double(joint.axis.x());
@@ -82,10 +86,14 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
 LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
                         const ModelLutOptions& options, const StagedProgress& progress) {
   const ModelSilhouettes silhouettes(cell, grid, options);
+  const std::size_t parts = silhouettes.parts().size();
+  const std::size_t cameras = silhouettes.camera_count();
   std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
-      cell, grid,
-      [&silhouettes](CellIndex cell_index, std::vector<FeatureMask>& masks) {
-        silhouettes.add_silhouettes(cell_index, masks);
+      cell, grid, parts,
+      [&silhouettes, parts, cameras](CellIndex cell_index, std::vector<FeatureMask>& masks) {
+        for (std::size_t part = 0; part < parts; ++part) {
+          silhouettes.add_part_silhouettes(cell_index, part, masks.data() + part * cameras);
+        }
       },
       options.threads, progress);
   LutSet set;
@@ -94,8 +102,9 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
   set.source = LutSource::kModel;
   set.columns = cell.feature_grid.columns();
   set.rows = cell.feature_grid.rows();
-  set.cameras =
-      invert_cell_tables(cell, grid, std::move(cell_tables), false, options.threads, progress);
+  set.parts = silhouettes.parts();
+  set.cameras = invert_cell_tables(cell, grid, parts, std::move(cell_tables), false,
+                                   options.threads, progress);
   set.static_cells = static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads,
                                            stage_progress(progress, 2));
   return set;

@@ -60,9 +60,9 @@ void append_band(std::vector<CellSet>& sets, std::size_t columns, bool first_ban
 
 }  // namespace
 
-PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, const CspaceGrid& grid,
-                                        const PixelTableBuild& build,
-                                        const ProgressCallback& progress) {
+PartLuts build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, const CspaceGrid& grid,
+                                     const PixelTableBuild& build,
+                                     const ProgressCallback& progress) {
   if (cell_table.cell_count() != grid.cell_count()) {
     throw std::invalid_argument("LUT-1 has " + std::to_string(cell_table.cell_count()) +
                                 " cells, the grid " + std::to_string(grid.cell_count()));
@@ -132,7 +132,8 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
     }
     if (progress) progress(static_cast<double>(band_end) / rows);
   }
-  PixelTables tables;
+  PartLuts tables;
+  tables.covered_pairs = cell_table.covered_pairs();
   for (std::size_t l = 0; l < levels.size(); ++l) {
     const auto table_of = [&grid, &level = levels[l]](EntriesBuild& entries) {
       return PixelToCellsTable(grid, level.columns, level.rows, std::move(entries.offsets),
@@ -140,9 +141,9 @@ PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, con
     };
     PixelToCellsTable table = table_of(levels[l].entries);
     if (l == 0) {
-      tables.pixels = std::move(table);
+      tables.pixel_to_cells = std::move(table);
     } else {
-      tables.blocks.push_back(std::move(table));
+      tables.pixel_blocks.push_back(std::move(table));
     }
     for (std::size_t n = 0; n < kNeighbourCount; ++n) {
       tables.differences[n].push_back(table_of(levels[l].differences[n]));

@@ -13,7 +13,9 @@ namespace safecell {
 std::uint64_t recorded_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
                                        const RecordingOptions& options) {
   Fnv1a64 hash;
-  hash.add_u64(model_lut_fingerprint(cell, grid, ModelLutOptions{}));
+  ModelLutOptions whole_robot;
+  whole_robot.parts = PartSplit::kWholeRobot;  // a recording sees the whole robot
+  hash.add_u64(model_lut_fingerprint(cell, grid, whole_robot));
   hash.add_u32(static_cast<std::uint32_t>(LutSource::kRecorded));
   hash.add_u32(static_cast<std::uint32_t>(options.key_stride));
   hash.add_u32(static_cast<std::uint32_t>(options.wrist_samples));
@@ -40,7 +42,7 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
   if (!recording.recorded()) throw std::invalid_argument("recorded tables need a recording");
   check_recording_bounded(recording);
   std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
-      cell, grid,
+      cell, grid, 1,
       [&recording](CellIndex cell_index, std::vector<FeatureMask>& masks) {
         for (std::size_t camera = 0; camera < masks.size(); ++camera) {
           recording.add_silhouette(cell_index, camera, masks[camera]);
@@ -53,7 +55,9 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
   set.source = LutSource::kRecorded;
   set.columns = cell.feature_grid.columns();
   set.rows = cell.feature_grid.rows();
-  set.cameras = invert_cell_tables(cell, grid, std::move(cell_tables), true, threads, progress);
+  // A recording sees the whole robot at once: one part.
+  set.parts = {RobotPart{"robot", 0, cell.robot->dof() + 1}};
+  set.cameras = invert_cell_tables(cell, grid, 1, std::move(cell_tables), true, threads, progress);
   ModelLutOptions model_options;
   model_options.threads = threads;
   const ModelSilhouettes model(cell, grid, model_options);

@@ -37,7 +37,12 @@ enum class SectionKind : std::uint32_t {
   kLeftDifferenceStrips = 11,
   kUpperDifferenceOffsets = 12,  // level as for the left ones
   kUpperDifferenceStrips = 13,
+  kPartBodies = 14,  // once: first and end body of every part
+  kPartNames = 15,   // per part
 };
+
+// Parts a file may hold: the part number is one byte.
+constexpr std::size_t kMaxParts = 255;
 
 // The section kinds of the differences to each neighbour.
 constexpr SectionKind kDifferenceOffsets[kNeighbourCount] = {SectionKind::kLeftDifferenceOffsets,
@@ -70,7 +75,8 @@ static_assert(sizeof(Header) == 80);
 struct SectionEntry {
   std::uint32_t kind;
   std::uint16_t camera;
-  std::uint16_t level;  // the LUT-2 pyramid level of block sections, else 0
+  std::uint8_t level;  // the LUT-2 pyramid level of block and difference sections, else 0
+  std::uint8_t part;   // the robot part of LUT-2 sections, statistics and part names, else 0
   std::uint64_t offset;
   std::uint64_t bytes;
 };
@@ -84,17 +90,17 @@ class FileImage {
   FileImage() { bytes_.resize(sizeof(Header)); }
 
   void add(SectionKind kind, std::uint16_t camera, const void* data, std::size_t size,
-           std::uint16_t level = 0) {
+           std::uint8_t part = 0, std::uint8_t level = 0) {
     bytes_.resize((bytes_.size() + 7) & ~std::size_t{7});
     sections_.push_back(
-        SectionEntry{static_cast<std::uint32_t>(kind), camera, level, bytes_.size(), size});
+        SectionEntry{static_cast<std::uint32_t>(kind), camera, level, part, bytes_.size(), size});
     const auto* first = static_cast<const char*>(data);
     bytes_.insert(bytes_.end(), first, first + size);
   }
   template <typename T>
-  void add(SectionKind kind, std::uint16_t camera, std::span<const T> values,
-           std::uint16_t level = 0) {
-    add(kind, camera, values.data(), values.size_bytes(), level);
+  void add(SectionKind kind, std::uint16_t camera, std::span<const T> values, std::uint8_t part = 0,
+           std::uint8_t level = 0) {
+    add(kind, camera, values.data(), values.size_bytes(), part, level);
   }
 
   std::string finish(Header header) {
@@ -197,32 +203,96 @@ std::span<const T> section_span(const std::filesystem::path& path, const Mapping
   return {reinterpret_cast<const T*>(mapping.data() + entry.offset), entry.bytes / sizeof(T)};
 }
 
+// The robot parts the file's LUT-2 sections are of: each a run of bodies after the one before.
+std::vector<RobotPart> read_parts(const std::filesystem::path& path, const Mapping& mapping,
+                                  std::span<const SectionEntry> entries) {
+  std::vector<RobotPart> parts;
+  for (const auto& entry : entries) {
+    if (static_cast<SectionKind>(entry.kind) != SectionKind::kPartBodies) continue;
+    const auto bodies = section_span<std::uint64_t>(path, mapping, entry);
+    if (bodies.empty() || bodies.size() % 2 != 0 || bodies.size() / 2 > kMaxParts) {
+      throw LutFileError(path, "robot part section of " + std::to_string(bodies.size()) +
+                                   " numbers; expected 2 per part, 1.." +
+                                   std::to_string(kMaxParts) + " parts");
+    }
+    for (std::size_t p = 0; p < bodies.size(); p += 2) {
+      const std::uint64_t first = bodies[p];
+      const std::uint64_t end = bodies[p + 1];
+      const std::uint64_t expected_first = parts.empty() ? 0 : parts.back().end_body;
+      if (first != expected_first || end <= first || end > kMaxJoints + 1) {
+        throw LutFileError(path, "robot part " + std::to_string(p / 2) + " has bodies " +
+                                     std::to_string(first) + ".." + std::to_string(end) +
+                                     "; expected a run beginning at body " +
+                                     std::to_string(expected_first));
+      }
+      parts.push_back(RobotPart{"part " + std::to_string(p / 2), first, end});
+    }
+  }
+  if (parts.empty()) throw LutFileError(path, "no robot part section");
+  for (const auto& entry : entries) {
+    if (static_cast<SectionKind>(entry.kind) != SectionKind::kPartNames) continue;
+    if (entry.part >= parts.size()) {
+      throw LutFileError(path, "a name for robot part " + std::to_string(entry.part) + " of " +
+                                   std::to_string(parts.size()));
+    }
+    const auto name = section_span<char>(path, mapping, entry);
+    parts[entry.part].name.assign(name.begin(), name.end());
+  }
+  return parts;
+}
+
 }  // namespace
 
 void write_lut_file(const std::filesystem::path& path, const LutSet& set) {
   FileImage image;
   if (set.cameras.size() >= kNoCamera) throw FileError(path, "too many cameras for a LUT file");
+  if (set.parts.empty() || set.parts.size() > kMaxParts) {
+    throw FileError(path, std::to_string(set.parts.size()) + " robot parts; a LUT file holds 1.." +
+                              std::to_string(kMaxParts));
+  }
+  std::vector<std::uint64_t> bodies;
+  for (const RobotPart& part : set.parts) {
+    bodies.push_back(part.first_body);
+    bodies.push_back(part.end_body);
+  }
+  image.add(SectionKind::kPartBodies, kNoCamera, std::span<const std::uint64_t>(bodies));
+  for (std::size_t p = 0; p < set.parts.size(); ++p) {
+    image.add(SectionKind::kPartNames, kNoCamera, set.parts[p].name.data(),
+              set.parts[p].name.size(), static_cast<std::uint8_t>(p));
+  }
   for (std::size_t c = 0; c < set.cameras.size(); ++c) {
     const auto camera = static_cast<std::uint16_t>(c);
     const CameraLuts& luts = set.cameras[c];
-    std::uint64_t block_strips = 0;
-    for (const auto& level : luts.pixel_blocks) block_strips += level.total_strips();
-    const std::uint64_t stats[kCameraStatsWords] = {
-        luts.covered_pairs, luts.pixel_to_cells.total_strips(), block_strips};
-    image.add(SectionKind::kCameraName, camera, luts.camera.data(), luts.camera.size());
-    image.add(SectionKind::kCameraStats, camera, stats, sizeof(stats));
-    image.add(SectionKind::kPixelOffsets, camera, luts.pixel_to_cells.offsets());
-    image.add(SectionKind::kPixelStrips, camera, luts.pixel_to_cells.strip_bytes());
-    for (std::size_t l = 0; l < luts.pixel_blocks.size(); ++l) {
-      const auto level = static_cast<std::uint16_t>(l + 1);
-      image.add(SectionKind::kBlockOffsets, camera, luts.pixel_blocks[l].offsets(), level);
-      image.add(SectionKind::kBlockStrips, camera, luts.pixel_blocks[l].strip_bytes(), level);
+    if (luts.parts.size() != set.parts.size()) {
+      throw FileError(path, "camera '" + luts.camera + "' has tables for " +
+                                std::to_string(luts.parts.size()) + " robot parts, the set " +
+                                std::to_string(set.parts.size()));
     }
-    for (std::size_t n = 0; n < kNeighbourCount; ++n) {
-      for (std::size_t l = 0; l < luts.differences[n].size(); ++l) {
-        const auto level = static_cast<std::uint16_t>(l);
-        image.add(kDifferenceOffsets[n], camera, luts.differences[n][l].offsets(), level);
-        image.add(kDifferenceStrips[n], camera, luts.differences[n][l].strip_bytes(), level);
+    image.add(SectionKind::kCameraName, camera, luts.camera.data(), luts.camera.size());
+    for (std::size_t p = 0; p < luts.parts.size(); ++p) {
+      const PartLuts& tables = luts.parts[p];
+      const auto part = static_cast<std::uint8_t>(p);
+      std::uint64_t block_strips = 0;
+      for (const auto& level : tables.pixel_blocks) block_strips += level.total_strips();
+      const std::uint64_t stats[kCameraStatsWords] = {
+          tables.covered_pairs, tables.pixel_to_cells.total_strips(), block_strips};
+      image.add(SectionKind::kCameraStats, camera, stats, sizeof(stats), part);
+      image.add(SectionKind::kPixelOffsets, camera, tables.pixel_to_cells.offsets(), part);
+      image.add(SectionKind::kPixelStrips, camera, tables.pixel_to_cells.strip_bytes(), part);
+      for (std::size_t l = 0; l < tables.pixel_blocks.size(); ++l) {
+        const auto level = static_cast<std::uint8_t>(l + 1);
+        image.add(SectionKind::kBlockOffsets, camera, tables.pixel_blocks[l].offsets(), part,
+                  level);
+        image.add(SectionKind::kBlockStrips, camera, tables.pixel_blocks[l].strip_bytes(), part,
+                  level);
+      }
+      for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+        for (std::size_t l = 0; l < tables.differences[n].size(); ++l) {
+          const auto level = static_cast<std::uint8_t>(l);
+          image.add(kDifferenceOffsets[n], camera, tables.differences[n][l].offsets(), part, level);
+          image.add(kDifferenceStrips[n], camera, tables.differences[n][l].strip_bytes(), part,
+                    level);
+        }
       }
     }
     if (luts.cell_to_pixels.cell_count() > 0) {
@@ -262,8 +332,9 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
   summary.cameras.resize(header.camera_count);
   const auto entries = section_span<SectionEntry>(
       path, mapping,
-      SectionEntry{0, kNoCamera, 0, header.section_table_offset,
+      SectionEntry{0, kNoCamera, 0, 0, header.section_table_offset,
                    std::uint64_t{header.section_count} * sizeof(SectionEntry)});
+  summary.parts = read_parts(path, mapping, entries);
   for (const auto& entry : entries) {
     if (entry.camera == kNoCamera) continue;
     if (entry.camera >= summary.cameras.size()) {
@@ -281,8 +352,8 @@ LutFileSummary read_lut_file_summary(const std::filesystem::path& path) {
         if (stats.size() != kCameraStatsWords) {
           throw LutFileError(path, "camera statistics of the wrong size");
         }
-        camera.covered_pairs = stats[0];
-        camera.strips = stats[1];
+        camera.covered_pairs += stats[0];
+        camera.strips += stats[1];
         break;
       }
       case SectionKind::kPixelOffsets:
@@ -331,47 +402,60 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
   }
   const auto entries = section_span<SectionEntry>(
       path, *mapping,
-      SectionEntry{0, kNoCamera, 0, header.section_table_offset,
+      SectionEntry{0, kNoCamera, 0, 0, header.section_table_offset,
                    std::uint64_t{header.section_count} * sizeof(SectionEntry)});
-  struct CameraSections {
-    const SectionEntry* name = nullptr;
+  struct PartSections {
     const SectionEntry* pixel_offsets = nullptr;
     const SectionEntry* pixel_strips = nullptr;
-    const SectionEntry* cell_offsets = nullptr;
-    const SectionEntry* cell_rects = nullptr;
     const SectionEntry* stats = nullptr;
     std::vector<const SectionEntry*> block_offsets;  // [level - 1]
     std::vector<const SectionEntry*> block_strips;
     std::vector<const SectionEntry*> difference_offsets[kNeighbourCount];  // [neighbour][level]
     std::vector<const SectionEntry*> difference_strips[kNeighbourCount];
   };
+  struct CameraSections {
+    const SectionEntry* name = nullptr;
+    const SectionEntry* cell_offsets = nullptr;
+    const SectionEntry* cell_rects = nullptr;
+    std::vector<PartSections> parts;
+  };
+  LutSet set;
+  set.parts = read_parts(path, *mapping, entries);
   std::vector<CameraSections> cameras(header.camera_count);
+  for (auto& camera : cameras) camera.parts.resize(set.parts.size());
   const SectionEntry* static_cells = nullptr;
   for (const auto& entry : entries) {
-    if (static_cast<SectionKind>(entry.kind) == SectionKind::kStaticCells) {
+    const auto kind = static_cast<SectionKind>(entry.kind);
+    if (kind == SectionKind::kStaticCells) {
       static_cells = &entry;
       continue;
     }
+    if (kind == SectionKind::kPartBodies || kind == SectionKind::kPartNames) continue;
     if (entry.camera >= cameras.size()) {
       throw LutFileError(path, "a section names camera " + std::to_string(entry.camera) + " of " +
                                    std::to_string(cameras.size()));
     }
-    CameraSections& sections = cameras[entry.camera];
-    switch (static_cast<SectionKind>(entry.kind)) {
+    if (entry.part >= set.parts.size()) {
+      throw LutFileError(path, "a section names robot part " + std::to_string(entry.part) + " of " +
+                                   std::to_string(set.parts.size()));
+    }
+    CameraSections& camera = cameras[entry.camera];
+    PartSections& sections = camera.parts[entry.part];
+    switch (kind) {
       case SectionKind::kCameraName:
-        sections.name = &entry;
+        camera.name = &entry;
+        break;
+      case SectionKind::kCellOffsets:
+        camera.cell_offsets = &entry;
+        break;
+      case SectionKind::kCellRects:
+        camera.cell_rects = &entry;
         break;
       case SectionKind::kPixelOffsets:
         sections.pixel_offsets = &entry;
         break;
       case SectionKind::kPixelStrips:
         sections.pixel_strips = &entry;
-        break;
-      case SectionKind::kCellOffsets:
-        sections.cell_offsets = &entry;
-        break;
-      case SectionKind::kCellRects:
-        sections.cell_rects = &entry;
         break;
       case SectionKind::kCameraStats:
         sections.stats = &entry;
@@ -381,9 +465,8 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
         if (entry.level < 1 || entry.level > 16) {
           throw LutFileError(path, "a block section of level " + std::to_string(entry.level));
         }
-        auto& slots = static_cast<SectionKind>(entry.kind) == SectionKind::kBlockOffsets
-                          ? sections.block_offsets
-                          : sections.block_strips;
+        auto& slots =
+            kind == SectionKind::kBlockOffsets ? sections.block_offsets : sections.block_strips;
         if (slots.size() < entry.level) slots.resize(entry.level, nullptr);
         slots[entry.level - 1U] = &entry;
         break;
@@ -395,7 +478,6 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
         if (entry.level > 16) {
           throw LutFileError(path, "a difference section of level " + std::to_string(entry.level));
         }
-        const auto kind = static_cast<SectionKind>(entry.kind);
         const bool upper = kind == SectionKind::kUpperDifferenceOffsets ||
                            kind == SectionKind::kUpperDifferenceStrips;
         const std::size_t neighbour = upper ? kUpperNeighbour : kLeftNeighbour;
@@ -411,7 +493,6 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
   }
   if (static_cells == nullptr) throw LutFileError(path, "no static-obstacle section");
 
-  LutSet set;
   set.fingerprint = header.fingerprint;
   set.grid_fingerprint = header.grid_fingerprint;
   set.source = static_cast<LutSource>(header.source);
@@ -423,12 +504,16 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     throw LutFileError(path, "static-obstacle section of the wrong size");
   }
   std::copy(words.begin(), words.end(), set.static_cells.words().begin());
+  const auto table = [&](const SectionEntry& offsets, const SectionEntry& strips, int block) {
+    return PixelToCellsTable(grid, (set.columns + block - 1) / block,
+                             (set.rows + block - 1) / block,
+                             section_span<std::uint64_t>(path, *mapping, offsets),
+                             section_span<std::uint8_t>(path, *mapping, strips), mapping);
+  };
   for (std::size_t c = 0; c < cameras.size(); ++c) {
     const CameraSections& sections = cameras[c];
-    if (sections.name == nullptr || sections.pixel_offsets == nullptr ||
-        sections.pixel_strips == nullptr || sections.stats == nullptr) {
-      throw LutFileError(path, "camera " + std::to_string(c) + " lacks its LUT-2 sections");
-    }
+    if (sections.name == nullptr)
+      throw LutFileError(path, "camera " + std::to_string(c) + " lacks its name");
     if (set.source == LutSource::kRecorded &&
         (sections.cell_offsets == nullptr || sections.cell_rects == nullptr)) {
       throw LutFileError(path, "recorded set without LUT-1 for camera " + std::to_string(c));
@@ -436,48 +521,47 @@ LutSet load_lut_file(const std::filesystem::path& path, const CspaceGrid& grid,
     const auto name = section_span<char>(path, *mapping, *sections.name);
     CameraLuts luts;
     luts.camera.assign(name.begin(), name.end());
-    const auto stats = section_span<std::uint64_t>(path, *mapping, *sections.stats);
-    if (stats.size() != kCameraStatsWords) {
-      throw LutFileError(path, "camera statistics of the wrong size");
-    }
-    luts.covered_pairs = stats[0];
-    if (sections.block_offsets.size() != sections.block_strips.size()) {
-      throw LutFileError(path, "camera '" + luts.camera + "': block levels do not pair up");
-    }
     try {
-      luts.pixel_to_cells = PixelToCellsTable(
-          grid, set.columns, set.rows,
-          section_span<std::uint64_t>(path, *mapping, *sections.pixel_offsets),
-          section_span<std::uint8_t>(path, *mapping, *sections.pixel_strips), mapping);
-      for (std::size_t l = 0; l < sections.block_offsets.size(); ++l) {
-        if (sections.block_offsets[l] == nullptr || sections.block_strips[l] == nullptr) {
-          throw LutFileError(
-              path, "camera '" + luts.camera + "' lacks block level " + std::to_string(l + 1));
+      for (std::size_t p = 0; p < sections.parts.size(); ++p) {
+        const PartSections& part = sections.parts[p];
+        const std::string where =
+            "camera '" + luts.camera + "', robot part '" + set.parts[p].name + "'";
+        if (part.pixel_offsets == nullptr || part.pixel_strips == nullptr ||
+            part.stats == nullptr) {
+          throw LutFileError(path, where + " lacks its LUT-2 sections");
         }
-        const int block = 1 << (l + 1);
-        luts.pixel_blocks.emplace_back(
-            grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
-            section_span<std::uint64_t>(path, *mapping, *sections.block_offsets[l]),
-            section_span<std::uint8_t>(path, *mapping, *sections.block_strips[l]), mapping);
-      }
-      for (std::size_t n = 0; n < kNeighbourCount; ++n) {
-        const auto& offsets = sections.difference_offsets[n];
-        const auto& strips = sections.difference_strips[n];
-        if (offsets.size() != strips.size() || offsets.size() > sections.block_offsets.size() + 1) {
-          throw LutFileError(path,
-                             "camera '" + luts.camera + "': difference levels do not pair up");
+        const auto stats = section_span<std::uint64_t>(path, *mapping, *part.stats);
+        if (stats.size() != kCameraStatsWords) {
+          throw LutFileError(path, where + ": statistics of the wrong size");
         }
-        for (std::size_t l = 0; l < offsets.size(); ++l) {
-          if (offsets[l] == nullptr || strips[l] == nullptr) {
-            throw LutFileError(path, "camera '" + luts.camera +
-                                         "' lacks the differences of level " + std::to_string(l));
+        PartLuts tables;
+        tables.covered_pairs = stats[0];
+        if (part.block_offsets.size() != part.block_strips.size()) {
+          throw LutFileError(path, where + ": block levels do not pair up");
+        }
+        tables.pixel_to_cells = table(*part.pixel_offsets, *part.pixel_strips, 1);
+        for (std::size_t l = 0; l < part.block_offsets.size(); ++l) {
+          if (part.block_offsets[l] == nullptr || part.block_strips[l] == nullptr) {
+            throw LutFileError(path, where + " lacks block level " + std::to_string(l + 1));
           }
-          const int block = 1 << l;
-          luts.differences[n].emplace_back(
-              grid, (set.columns + block - 1) / block, (set.rows + block - 1) / block,
-              section_span<std::uint64_t>(path, *mapping, *offsets[l]),
-              section_span<std::uint8_t>(path, *mapping, *strips[l]), mapping);
+          tables.pixel_blocks.push_back(
+              table(*part.block_offsets[l], *part.block_strips[l], 1 << (l + 1)));
         }
+        for (std::size_t n = 0; n < kNeighbourCount; ++n) {
+          const auto& offsets = part.difference_offsets[n];
+          const auto& strips = part.difference_strips[n];
+          if (offsets.size() != strips.size() || offsets.size() > part.block_offsets.size() + 1) {
+            throw LutFileError(path, where + ": difference levels do not pair up");
+          }
+          for (std::size_t l = 0; l < offsets.size(); ++l) {
+            if (offsets[l] == nullptr || strips[l] == nullptr) {
+              throw LutFileError(path,
+                                 where + " lacks the differences of level " + std::to_string(l));
+            }
+            tables.differences[n].push_back(table(*offsets[l], *strips[l], 1 << l));
+          }
+        }
+        luts.parts.push_back(std::move(tables));
       }
       if (sections.cell_offsets != nullptr && sections.cell_rects != nullptr) {
         luts.cell_to_pixels = CellToPixelsTable(

@@ -1,5 +1,6 @@
 #include "safecell/robot/kinematics.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace safecell {
@@ -49,16 +50,20 @@ Eigen::Isometry3d frame_pose(const RobotModel& model, const std::vector<double>&
 
 namespace {
 
-// The shapes `pick` chooses from the base and every link, placed by the link poses.
+// The shapes `pick` chooses from the bodies in `bodies`, placed by the link poses.
 template <typename Pick>
 std::vector<PlacedShape> placed_shapes(const RobotModel& model, const std::vector<double>& q,
-                                       const Eigen::Isometry3d& base_pose, Pick pick) {
+                                       const Eigen::Isometry3d& base_pose, BodyRange bodies,
+                                       Pick pick) {
   const auto poses = link_poses(model, q);
   std::vector<PlacedShape> shapes;
-  for (const auto& shape : pick(model.base)) {
-    shapes.push_back(PlacedShape{shape.shape, base_pose * shape.pose});
+  if (bodies.first == 0 && bodies.end > 0) {
+    for (const auto& shape : pick(model.base)) {
+      shapes.push_back(PlacedShape{shape.shape, base_pose * shape.pose});
+    }
   }
-  for (std::size_t j = 0; j < model.dof(); ++j) {
+  const std::size_t end_link = std::min(model.dof(), std::max<std::size_t>(bodies.end, 1) - 1);
+  for (std::size_t j = std::max<std::size_t>(bodies.first, 1) - 1; j < end_link; ++j) {
     for (const auto& shape : pick(model.links[j])) {
       shapes.push_back(PlacedShape{shape.shape, base_pose * poses[j] * shape.pose});
     }
@@ -69,15 +74,15 @@ std::vector<PlacedShape> placed_shapes(const RobotModel& model, const std::vecto
 }  // namespace
 
 std::vector<PlacedShape> collision_shapes_at(const RobotModel& model, const std::vector<double>& q,
-                                             const Eigen::Isometry3d& base_pose) {
+                                             const Eigen::Isometry3d& base_pose, BodyRange bodies) {
   return placed_shapes(
-      model, q, base_pose,
+      model, q, base_pose, bodies,
       [](const RobotLink& link) -> const std::vector<PlacedShape>& { return link.collision; });
 }
 
 std::vector<PlacedShape> visual_shapes_at(const RobotModel& model, const std::vector<double>& q,
-                                          const Eigen::Isometry3d& base_pose) {
-  return placed_shapes(model, q, base_pose,
+                                          const Eigen::Isometry3d& base_pose, BodyRange bodies) {
+  return placed_shapes(model, q, base_pose, bodies,
                        [](const RobotLink& link) -> const std::vector<PlacedShape>& {
                          return link.visual.empty() ? link.collision : link.visual;
                        });

@@ -14,8 +14,12 @@ namespace {
 CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
                               const ModelLutOptions& options) {
   check_model_lut_options(cell, options);
+  std::vector<std::size_t> part_starts;
+  for (const RobotPart& part : robot_parts(*cell.robot, options.parts)) {
+    part_starts.push_back(part.first_body);
+  }
   return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                      options.padding_m);
+                      options.padding_m, std::move(part_starts));
 }
 
 }  // namespace
@@ -36,6 +40,11 @@ void check_model_lut_options(const CellModel& cell, const ModelLutOptions& optio
   if (!std::isfinite(options.padding_m) || options.padding_m < 0.0 || options.padding_m > 1.0) {
     throw std::invalid_argument("padding must be 0..1 m, got " + std::to_string(options.padding_m));
   }
+  const auto split = static_cast<std::uint32_t>(options.parts);
+  if (split < static_cast<std::uint32_t>(PartSplit::kWholeRobot) ||
+      split > static_cast<std::uint32_t>(PartSplit::kArmSegments)) {
+    throw std::invalid_argument("unknown robot part split " + std::to_string(split));
+  }
 }
 
 ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid,
@@ -43,6 +52,7 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
     : grid_(grid),
       feature_grid_(cell.feature_grid),
       envelope_(checked_envelope(cell, grid, options)) {
+  parts_ = robot_parts(*cell.robot, options.parts);
   projections_.reserve(cell.cameras.size());
   for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
   cached_bodies_ = envelope_.tail_body();  // the head, per prefix
@@ -66,7 +76,7 @@ void ModelSilhouettes::add_silhouette(CellIndex cell, std::size_t camera, Featur
     throw std::out_of_range("camera " + std::to_string(camera) + " of " +
                             std::to_string(projections_.size()));
   }
-  add_cell(cell, camera, camera + 1, &mask);
+  add_bodies(cell, {}, camera, camera + 1, &mask);
 }
 
 void ModelSilhouettes::add_silhouettes(CellIndex cell, std::vector<FeatureMask>& masks) const {
@@ -74,18 +84,27 @@ void ModelSilhouettes::add_silhouettes(CellIndex cell, std::vector<FeatureMask>&
     throw std::invalid_argument(std::to_string(masks.size()) + " masks for " +
                                 std::to_string(projections_.size()) + " cameras");
   }
-  add_cell(cell, 0, projections_.size(), masks.data());
+  add_bodies(cell, {}, 0, projections_.size(), masks.data());
 }
 
-void ModelSilhouettes::add_cell(CellIndex cell, std::size_t first_camera, std::size_t end_camera,
-                                FeatureMask* masks) const {
+void ModelSilhouettes::add_part_silhouettes(CellIndex cell, std::size_t part,
+                                            FeatureMask* masks) const {
+  const RobotPart& robot_part = parts_.at(part);
+  add_bodies(cell, {robot_part.first_body, robot_part.end_body}, 0, projections_.size(), masks);
+}
+
+void ModelSilhouettes::add_bodies(CellIndex cell, BodyRange bodies, std::size_t first_camera,
+                                  std::size_t end_camera, FeatureMask* masks) const {
   const auto coords = grid_.coords_of(cell);
   if (!coords.ok()) throw std::out_of_range("cell " + std::to_string(cell) + " outside the grid");
+  const std::size_t end_body = std::min(bodies.end, envelope_.body_count());
+  const std::size_t end_cached = std::min(end_body, cached_bodies_);
   thread_local std::vector<Ball> balls;
-  envelope_.balls_of_bodies(coords.value(), cached_bodies_, balls);
+  envelope_.balls_of_bodies(coords.value(), std::max(bodies.first, cached_bodies_), end_body,
+                            balls);
   for (std::size_t camera = first_camera; camera < end_camera; ++camera) {
     FeatureMask& mask = masks[camera - first_camera];
-    for (std::size_t body = 0; body < cached_bodies_; ++body) {
+    for (std::size_t body = bodies.first; body < end_cached; ++body) {
       mask |= cached_[body][envelope_.prefix_of(coords.value(), body)][camera];
     }
     add_ball_rects(projections_[camera], balls, mask);

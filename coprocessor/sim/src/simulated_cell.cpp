@@ -29,9 +29,11 @@ SimulatedCell::SimulatedCell(RobotModel robot, std::vector<PinholeCamera> camera
   }
 }
 
-std::vector<PlacedShape> SimulatedCell::robot_shapes(const std::vector<double>& q) const {
-  return appearance_ == RobotAppearance::kVisual ? visual_shapes_at(robot_, q)
-                                                 : collision_shapes_at(robot_, q);
+std::vector<PlacedShape> SimulatedCell::robot_shapes(const std::vector<double>& q,
+                                                     BodyRange bodies) const {
+  const Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+  return appearance_ == RobotAppearance::kVisual ? visual_shapes_at(robot_, q, base, bodies)
+                                                 : collision_shapes_at(robot_, q, base, bodies);
 }
 
 std::vector<SurfaceMesh> SimulatedCell::moving_surfaces(const SimScene& scene) const {
@@ -79,8 +81,9 @@ cv::Mat SimulatedCell::object_ids(std::size_t camera_index,
   return renderers_.at(camera_index).object_ids(surfaces);
 }
 
-cv::Mat SimulatedCell::robot_coverage(std::size_t camera_index, const std::vector<double>& q) {
-  return renderers_.at(camera_index).coverage({surface_of(robot_shapes(q), kRobotAlbedo)});
+cv::Mat SimulatedCell::robot_coverage(std::size_t camera_index, const std::vector<double>& q,
+                                      BodyRange bodies) {
+  return renderers_.at(camera_index).coverage({surface_of(robot_shapes(q, bodies), kRobotAlbedo)});
 }
 
 }  // namespace safecell

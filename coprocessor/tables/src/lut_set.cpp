@@ -12,13 +12,25 @@ const char* to_string(LutSource source) {
   return "unknown";
 }
 
-std::size_t CameraLuts::pixel_table_bytes() const {
+std::size_t PartLuts::pixel_table_bytes() const {
   std::size_t bytes = pixel_to_cells.bytes();
   for (const auto& level : pixel_blocks) bytes += level.bytes();
   for (const auto& neighbour : differences) {
     for (const auto& level : neighbour) bytes += level.bytes();
   }
   return bytes;
+}
+
+std::size_t CameraLuts::pixel_table_bytes() const {
+  std::size_t bytes = 0;
+  for (const auto& part : parts) bytes += part.pixel_table_bytes();
+  return bytes;
+}
+
+std::uint64_t CameraLuts::covered_pairs() const {
+  std::uint64_t pairs = 0;
+  for (const auto& part : parts) pairs += part.covered_pairs;
+  return pairs;
 }
 
 std::uint64_t uncompressed_bytes(std::uint64_t covered_pairs, std::uint32_t cell_count,

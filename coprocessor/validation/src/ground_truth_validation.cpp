@@ -97,7 +97,8 @@ class Worker {
                                     to_string(placed.stratum),
                                     s,
                                     &obstacles_,
-                                    options_.needless_stops_traced_per_scene};
+                                    options_.needless_stops_traced_per_scene,
+                                    &fusion->parts()};
     static_cast<SceneCheck&>(result.report) =
         check_scene(world_, grid_, sim_, under_test, options_.configurations_per_scene, rng);
     result.report.scenes = 1;

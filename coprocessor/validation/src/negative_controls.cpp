@@ -85,9 +85,11 @@ std::optional<NegativeControl> negative_control_named(const std::string& name) {
 LutSet with_strip_dropped(const LutSet& luts, const CspaceGrid& grid) {
   LutSet damaged = luts;
   for (CameraLuts& camera : damaged.cameras) {
-    camera.pixel_to_cells = drop_band_strips(camera.pixel_to_cells, grid);
-    camera.pixel_blocks.clear();
-    for (auto& differences : camera.differences) differences.clear();
+    for (PartLuts& part : camera.parts) {
+      part.pixel_to_cells = drop_band_strips(part.pixel_to_cells, grid);
+      part.pixel_blocks.clear();
+      for (auto& differences : part.differences) differences.clear();
+    }
   }
   return damaged;
 }

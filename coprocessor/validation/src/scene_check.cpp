@@ -78,28 +78,38 @@ NeedlessStopCause cause_of_needless_stop(const CellModel& cell, const CspaceGrid
       return NeedlessStopCause::kInCell;
     }
   }
+  const std::vector<RobotPart> whole_robot{RobotPart{"robot", 0, cell.robot->dof() + 1}};
+  const std::vector<RobotPart>& parts =
+      under_test.parts != nullptr ? *under_test.parts : whole_robot;
   const FeatureGrid& features = cell.feature_grid;
-  std::vector<FeatureMask> exact(sim.camera_count(), FeatureMask(features));
+  const std::size_t cameras = sim.camera_count();
+  std::vector<FeatureMask> exact(parts.size() * cameras, FeatureMask(features));  // part-major
   for (int k = 0; k < kSilhouetteSamples; ++k) {
     const std::vector<double> sample = configuration_in_cell(grid, at, rng);
-    for (std::size_t c = 0; c < sim.camera_count(); ++c) {
-      const cv::Mat covered = sim.robot_coverage(c, sample);
-      for (int y = 0; y < covered.rows; ++y) {
-        const auto* row = covered.ptr<std::uint8_t>(y);
-        for (int x = 0; x < covered.cols; ++x) {
-          if (row[x] != 0)
-            exact[c].set(x / features.cell_width_px(), y / features.cell_height_px());
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      for (std::size_t c = 0; c < cameras; ++c) {
+        const cv::Mat covered =
+            sim.robot_coverage(c, sample, BodyRange{parts[p].first_body, parts[p].end_body});
+        FeatureMask& mask = exact[p * cameras + c];
+        for (int y = 0; y < covered.rows; ++y) {
+          const auto* row = covered.ptr<std::uint8_t>(y);
+          for (int x = 0; x < covered.cols; ++x) {
+            if (row[x] != 0) mask.set(x / features.cell_width_px(), y / features.cell_height_px());
+          }
         }
       }
     }
   }
-  int meeting = 0;
-  for (std::size_t c = 0; c < sim.camera_count(); ++c) {
-    const FeatureMask& obstacles = (*under_test.obstacles)[c];
-    meeting += obstacles.columns() == exact[c].columns() && exact[c].intersects(obstacles) ? 1 : 0;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    int meeting = 0;
+    for (std::size_t c = 0; c < cameras; ++c) {
+      const FeatureMask& obstacles = (*under_test.obstacles)[c];
+      const FeatureMask& mask = exact[p * cameras + c];
+      meeting += obstacles.columns() == mask.columns() && mask.intersects(obstacles) ? 1 : 0;
+    }
+    if (meeting >= under_test.camera_threshold) return NeedlessStopCause::kVisualHull;
   }
-  return meeting >= under_test.camera_threshold ? NeedlessStopCause::kVisualHull
-                                                : NeedlessStopCause::kEnvelope;
+  return NeedlessStopCause::kEnvelope;
 }
 
 }  // namespace

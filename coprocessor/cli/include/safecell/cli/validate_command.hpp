@@ -23,8 +23,9 @@ struct ValidateOptions {
   // The tables and fusion under test (ablations); unset: the cell's and the defaults.
   double padding_m = 0.02;
   double ball_radius_m = 0.06;
-  double m_max_m = 0.0;      // 0: the cell's
-  int camera_threshold = 0;  // 0: the cell's
+  std::string robot_parts = "arm-segments";  // the parts the cameras vote on (robot_parts.hpp)
+  double m_max_m = 0.0;                      // 0: the cell's
+  int camera_threshold = 0;                  // 0: the cell's
   // Model error applied to the simulated world (model_error.hpp); --model-error sets the
   // documented tolerances, the single options override them.
   bool documented_model_error = false;

@@ -25,6 +25,10 @@
 // Per cell only the rest remains: place them with link k's pose and sweep by joints k-1..0. The
 // envelope holds the robot all the same: every point lies in a kept ball before the last sweeps,
 // and the sweeps of that ball hold its paths.
+//
+// Parts. The fusion votes per robot part (robot_parts.hpp), so each part's envelope must be had
+// on its own. The tail tables are kept per segment of the tail, cut where a part begins: a ball
+// dropped as inside another is then only ever dropped for one of its own part.
 
 #include <cstdint>
 #include <vector>
@@ -42,20 +46,24 @@ class CellEnvelope {
   // Tail tables larger than this many balls in all are not made; the tail is then computed per
   // cell like the head.
   static constexpr std::size_t kMaxTailBalls = std::size_t{1} << 18;
-  // Changes whenever the balls of a cell change (table fingerprints include it). 2: tail tables.
-  static constexpr std::uint32_t kMethodVersion = 2;
+  // Changes whenever the balls of a cell change (table fingerprints include it). 2: tail tables;
+  // 3: tail tables per part segment.
+  static constexpr std::uint32_t kMethodVersion = 3;
 
-  // padding_m: added to every ball (calibration and model error). Bodies with at most
+  // padding_m: added to every ball (calibration and model error). part_starts: the first body of
+  // each part (ascending; body 0 implied), where the tail tables are cut. Bodies with at most
   // max_head_prefixes prefixes form the head. Throws std::invalid_argument when the grid's joint
-  // count is not the robot's, or the padding is negative or not finite.
+  // count is not the robot's, the padding is negative or not finite, or a part start is not a
+  // body.
   CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid, double padding_m,
+               std::vector<std::size_t> part_starts = {},
                std::size_t max_head_prefixes = kMaxHeadPrefixes);
 
   // The envelope of one cell, in the robot base frame (= the cell frame), into `balls` (cleared
   // first). Thread-safe; `balls` is the caller's scratch and keeps its capacity.
   // Precondition: coords inside the grid (std::out_of_range otherwise).
   void balls_of_cell(const GridCoords& coords, std::vector<Ball>& balls) const {
-    balls_of_bodies(coords, 0, balls);
+    balls_of_bodies(coords, 0, body_count(), balls);
   }
 
   // Bodies: 0 is the base, body j + 1 is link j. The balls of body b depend only on the cells of
@@ -67,8 +75,9 @@ class CellEnvelope {
   [[nodiscard]] std::size_t prefix_of(const GridCoords& coords, std::size_t body) const;
   // The balls of one body for one prefix (appended to `balls`).
   void append_body_balls(std::size_t body, std::size_t prefix, std::vector<Ball>& balls) const;
-  // The balls of bodies first_body.. of the cell, into `balls` (cleared first). Thread-safe.
-  void balls_of_bodies(const GridCoords& coords, std::size_t first_body,
+  // The balls of bodies first_body..end_body-1 of the cell, into `balls` (cleared first).
+  // Thread-safe. From the tail tables where the range begins and ends at segment bounds.
+  void balls_of_bodies(const GridCoords& coords, std::size_t first_body, std::size_t end_body,
                        std::vector<Ball>& balls) const;
   // How many balls the tail tables hold in all (0 when there are none).
   [[nodiscard]] std::size_t tail_table_balls() const;
@@ -84,15 +93,20 @@ class CellEnvelope {
   // lowest_joint.
   void append_link_balls(const CellFrames& frames, std::size_t first_body, std::size_t end_body,
                          std::size_t lowest_joint, std::vector<Ball>& balls) const;
-  void make_tail_tables(std::size_t max_head_prefixes);
+  void make_tail_tables(std::size_t max_head_prefixes, const std::vector<std::size_t>& part_starts);
   [[nodiscard]] std::size_t suffix_of(const GridCoords& coords) const;
+  // The tail segment that begins at `body`, or segment_starts_.size() when none does.
+  [[nodiscard]] std::size_t segment_starting_at(std::size_t body) const;
 
   RobotModel robot_;
   RobotBalls robot_balls_;
   CspaceGrid grid_;
   double padding_m_;
   std::size_t tail_body_ = 0;
-  std::vector<std::vector<Ball>> tail_tables_;  // [suffix]: in link (tail_body_ - 1)'s frame
+  // First body of each tail segment, ascending; the last ends at body_count().
+  std::vector<std::size_t> segment_starts_;
+  // [segment][suffix]: in link (tail_body_ - 1)'s frame; empty when there are no tables.
+  std::vector<std::vector<std::vector<Ball>>> tail_tables_;
 };
 
 }  // namespace safecell

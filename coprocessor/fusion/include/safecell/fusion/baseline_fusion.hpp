@@ -28,7 +28,7 @@ class BaselineFusion {
   const LutSet& luts_;
   const RobotSilhouettes& silhouettes_;
   FusionSettings settings_;
-  std::vector<std::vector<CellIndex>> observable_;  // per camera, cell by cell
+  std::vector<std::vector<CellIndex>> observable_;  // per part and camera, cell by cell
   std::vector<std::uint8_t> counters_;
   std::vector<std::uint8_t> stamps_;
   std::vector<FeatureMask> robot_;

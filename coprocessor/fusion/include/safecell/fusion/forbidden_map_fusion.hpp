@@ -4,6 +4,14 @@
 // suspicious cells (the union of the cells of its blocked pixels); a cell is critical when at
 // least `camera_threshold` cameras suspect it; forbidden = critical + static obstacles.
 //
+// The vote is taken per robot part (robot_parts.hpp): each part has its own LUT-2, and a cell is
+// critical when, for some part, at least `camera_threshold` cameras suspect it through that
+// part's tables. A configuration collides where one part meets the obstacle; that part's
+// silhouette holds the obstacle in every camera that sees it, so this is exactly as safe as the
+// paper's vote over the whole robot, without its phantoms (one camera's obstacle at the wrist,
+// another's at the elbow). A part that fewer than `camera_threshold` cameras can suspect at all
+// this cycle (their obstacles miss its every non-empty pixel) is skipped.
+//
 // Back-projection uses LUT-2's block levels where it can: a block of 2^l x 2^l pixels that are
 // all obstacles adds its precomputed union at once (pixel_table_builder.hpp), and a pixel or block
 // whose left or upper neighbour is all obstacles adds only its difference to it (the shorter one
@@ -44,8 +52,13 @@ struct FusionSettings {
 
 struct FusionCounts {
   std::vector<std::size_t> obstacle_pixels;  // per camera, after robot removal (0 when unknown)
-  // Per camera: back-projection stopped early because the set held every cell the camera sees.
+  // Per part and camera (part * cameras + camera): back-projection stopped early because the set
+  // held every cell the camera sees of the part.
   std::vector<bool> saturated;
+  // Per part: whether enough cameras could suspect it to be voted on (else it was skipped), and
+  // whether it made any cell critical.
+  std::vector<bool> part_voted;
+  std::vector<bool> part_critical;
   std::size_t critical_cells = 0;
   std::size_t forbidden_cells = 0;
 };
@@ -70,9 +83,9 @@ class ForbiddenMapFusion {
 
   [[nodiscard]] const CellSet& forbidden() const { return forbidden_; }
   [[nodiscard]] const CellSet& critical() const { return critical_; }
-  // The cells one camera suspected in the last cycle (none for an unknown view); packed on each
-  // call, for pictures and tests.
-  [[nodiscard]] CellSet suspicious(std::size_t camera) const;
+  // The cells one camera suspected through one part's tables in the last cycle (none for an
+  // unknown view or a part not voted on); packed on each call, for pictures and tests.
+  [[nodiscard]] CellSet suspicious(std::size_t part, std::size_t camera) const;
   // The obstacle pixels of one camera in the last cycle (blocked minus the robot).
   [[nodiscard]] const FeatureMask& obstacles(std::size_t camera) const {
     return obstacles_.at(camera);
@@ -83,29 +96,47 @@ class ForbiddenMapFusion {
     return robot_.at(camera);
   }
   [[nodiscard]] const FusionCounts& counts() const { return counts_; }
-  // Cells each camera can see at all (LUT-2 of some pixel holds them).
+  // Cells a camera can see one part in at all (that part's LUT-2 of some pixel holds them).
+  [[nodiscard]] const CellSet& observable(std::size_t part, std::size_t camera) const {
+    return observable_.at(slot(part, camera));
+  }
+  // Cells a camera can see some part in.
   [[nodiscard]] const CellSet& observable(std::size_t camera) const {
-    return observable_.at(camera);
+    return observable_any_part_.at(camera);
   }
   [[nodiscard]] std::size_t camera_count() const { return luts_.cameras.size(); }
+  [[nodiscard]] std::size_t part_count() const { return luts_.parts.size(); }
+  [[nodiscard]] const std::vector<RobotPart>& parts() const { return luts_.parts; }
   [[nodiscard]] const FusionSettings& settings() const { return settings_; }
 
  private:
+  // Per part and camera data are kept part-major.
+  [[nodiscard]] std::size_t slot(std::size_t part, std::size_t camera) const {
+    return part * luts_.cameras.size() + camera;
+  }
   void check(const std::vector<CameraObservation>& observations) const;
-  // The camera's suspicious cells from its obstacle pixels, into suspicious_lines_[camera].
-  // Returns whether it stopped early, the set holding every cell the camera can see.
-  bool back_project(std::size_t camera);
+  // Which cameras can suspect the part this cycle (unknown views always can): into voters_.
+  // Returns how many.
+  std::size_t find_voters(const std::vector<CameraObservation>& observations, std::size_t part);
+  // The camera's suspicious cells of one part from its obstacle pixels, into
+  // suspicious_lines_[slot]. Returns whether it stopped early, the set holding every cell the
+  // camera can see of the part.
+  bool back_project(std::size_t part, std::size_t camera);
 
   const LutSet& luts_;
   const RobotSilhouettes& silhouettes_;
   const ConfigurationSilhouettes* at_configuration_;
   FusionSettings settings_;
-  std::vector<CellSet> observable_;
-  std::vector<CellLines> suspicious_lines_;                   // per camera, filled box by box
-  std::vector<CellLines> observable_lines_;                   // observable_ in the line layout
-  std::vector<std::span<const std::uint64_t>> camera_lines_;  // this cycle's set per camera
+  std::vector<CellSet> observable_;           // per part and camera
+  std::vector<CellSet> observable_any_part_;  // per camera
+  std::vector<FeatureMask> reach_;            // per part and camera: pixels with any cell
+  std::vector<CellLines> suspicious_lines_;   // per part and camera, filled box by box
+  std::vector<CellLines> observable_lines_;   // observable_ in the line layout
+  std::vector<bool> voters_;                  // per camera, for the part being voted on
+  std::vector<std::span<const std::uint64_t>> camera_lines_;  // this part's set per camera
   // at_least_[k]: cells suspected by at least k + 1 cameras; all in the line layout.
   std::vector<std::vector<std::uint64_t>> at_least_;
+  std::vector<std::uint64_t> part_critical_lines_;
   std::vector<std::uint64_t> critical_lines_;
   std::vector<FeatureMask> robot_;
   std::vector<FeatureMask> obstacles_;
@@ -125,6 +156,8 @@ void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int
 
 // Every cell some pixel of the table back-projects to.
 [[nodiscard]] CellSet observable_cells(const PixelToCellsTable& table);
+// Every cell some pixel of some part's table of the camera back-projects to.
+[[nodiscard]] CellSet observable_cells(const CameraLuts& camera);
 
 // Where the robot is, for robot removal: its cell, and its joint values if known.
 struct RobotAtExposure {

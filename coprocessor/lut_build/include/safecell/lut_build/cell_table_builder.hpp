@@ -13,19 +13,19 @@
 
 namespace safecell {
 
-// Fills masks[camera] (cleared and of the grid's size on entry) for one cell. Called from several
-// threads at once.
+// Fills masks[table] (cleared and of the grid's size on entry) for one cell: one table per camera,
+// or per robot part and camera (part-major). Called from several threads at once.
 using CellSilhouettes = std::function<void(CellIndex cell, std::vector<FeatureMask>& masks)>;
 
 struct CellTableBuild {
   std::uint32_t cell_count = 0;
-  std::size_t camera_count = 0;
-  int columns = 0;  // the feature grid
+  std::size_t table_count = 0;  // cameras, or parts x cameras
+  int columns = 0;              // the feature grid
   int rows = 0;
   unsigned threads = 0;  // 0: one per hardware thread
 };
 
-// One table per camera.
+// The tables, in the order of the masks.
 [[nodiscard]] std::vector<CellToPixelsTable> build_cell_to_pixels_tables(
     const CellTableBuild& build, const CellSilhouettes& silhouettes,
     const ProgressCallback& progress = {});

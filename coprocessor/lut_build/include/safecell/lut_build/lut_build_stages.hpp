@@ -20,17 +20,18 @@ using StagedProgress = std::function<void(int stage, double fraction_done)>;
 // The callback of one stage (empty when `progress` is).
 [[nodiscard]] ProgressCallback stage_progress(const StagedProgress& progress, int stage);
 
-// LUT-1 of every camera of the cell (stage 0).
-[[nodiscard]] std::vector<CellToPixelsTable> build_cell_tables(const CellModel& cell,
-                                                               const CspaceGrid& grid,
-                                                               const CellSilhouettes& silhouettes,
-                                                               unsigned threads,
-                                                               const StagedProgress& progress);
+// LUT-1 of every robot part in every camera of the cell (stage 0), part-major: table
+// part * cameras + camera.
+[[nodiscard]] std::vector<CellToPixelsTable> build_cell_tables(
+    const CellModel& cell, const CspaceGrid& grid, std::size_t part_count,
+    const CellSilhouettes& silhouettes, unsigned threads, const StagedProgress& progress);
 
-// The set's cameras: LUT-2 of each from its LUT-1 (stage 1). keep_cell_tables: whether LUT-1 stays
-// in the set (recorded mode) or is dropped (model mode computes it again when needed).
+// The set's cameras: LUT-2 of each part from its LUT-1 (stage 1), the tables as
+// build_cell_tables() orders them. keep_cell_tables: whether LUT-1 stays in the set (recorded
+// mode, one part only) or is dropped (model mode computes it again when needed).
 [[nodiscard]] std::vector<CameraLuts> invert_cell_tables(const CellModel& cell,
                                                          const CspaceGrid& grid,
+                                                         std::size_t part_count,
                                                          std::vector<CellToPixelsTable> cell_tables,
                                                          bool keep_cell_tables, unsigned threads,
                                                          const StagedProgress& progress);

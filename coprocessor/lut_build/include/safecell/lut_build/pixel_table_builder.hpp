@@ -18,6 +18,7 @@
 #include "safecell/compute/parallel_chunks.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/tables/cell_to_pixels_table.hpp"
+#include "safecell/tables/lut_set.hpp"
 #include "safecell/tables/neighbour.hpp"
 #include "safecell/tables/pixel_to_cells_table.hpp"
 
@@ -31,20 +32,14 @@ struct PixelTableBuild {
   int block_levels = 3;                          // blocks of 2, 4 and 8 pixels a side
 };
 
-struct PixelTables {
-  PixelToCellsTable pixels;               // LUT-2 proper
-  std::vector<PixelToCellsTable> blocks;  // blocks[l - 1]: blocks of 2^l x 2^l pixels
-  // differences[neighbour][l]: per pixel (l = 0) or block of 2^l x 2^l pixels, what its cells add
-  // to those of its neighbour. Nothing in the first column (left) or row (upper); the whole entry
-  // in the first row of a band but the first (upper: the band above is gone by then).
-  std::array<std::vector<PixelToCellsTable>, kNeighbourCount> differences;
-};
-
-// Throws std::invalid_argument when the table is not of the grid, or for block levels outside
+// LUT-2 of one part, its block levels and their differences (lut_set.hpp) from the part's LUT-1.
+// Differences: nothing in the first column (left) or row (upper); the whole entry in the first
+// row of a band but the first (upper: the band above is gone by then). Throws
+// std::invalid_argument when the table is not of the grid, or for block levels outside
 // 0..kMaxBlockLevels.
-[[nodiscard]] PixelTables build_pixel_to_cells_tables(const CellToPixelsTable& cell_table,
-                                                      const CspaceGrid& grid,
-                                                      const PixelTableBuild& build = {},
-                                                      const ProgressCallback& progress = {});
+[[nodiscard]] PartLuts build_pixel_to_cells_tables(const CellToPixelsTable& cell_table,
+                                                   const CspaceGrid& grid,
+                                                   const PixelTableBuild& build = {},
+                                                   const ProgressCallback& progress = {});
 
 }  // namespace safecell

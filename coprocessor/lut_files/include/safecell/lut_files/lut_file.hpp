@@ -6,12 +6,13 @@
 //     and grid fingerprint, source (model/recorded), feature grid columns and rows, camera count,
 //     cell count, section count, section table offset, file size, CRC-32 of the whole file
 //     computed with this field zero.
-//   section table: per section its kind, camera (or 0xFFFF), pyramid level, offset and size in
-//     bytes.
-//   sections: per camera its name, statistics, LUT-2 offsets and strips for the pixels and for each
-//     block level, the same for their differences to the left and the upper neighbour, and
-//     (recorded sets) LUT-1 offsets and rectangles; once, the static-obstacle cells as 64-bit
-//     words.
+//   section table: per section its kind, camera (or 0xFFFF), pyramid level, robot part, offset
+//     and size in bytes.
+//   sections: once, the robot parts' bodies (first and end body per part, 64-bit each) and per
+//     part its name; per camera its name and (recorded sets) LUT-1 offsets and rectangles; per
+//     camera and part its statistics, LUT-2 offsets and strips for the pixels and for each block
+//     level, the same for their differences to the left and the upper neighbour; once, the
+//     static-obstacle cells as 64-bit words.
 // A file of another version, another fingerprint or grid, a bad checksum, or sections that do not
 // fit is refused with LutFileError naming the file and what was wrong; nothing is guessed.
 
@@ -28,7 +29,8 @@
 
 namespace safecell {
 
-inline constexpr std::uint32_t kLutFileVersion = 4;
+// 5: LUT-2 per robot part.
+inline constexpr std::uint32_t kLutFileVersion = 5;
 
 class LutFileError : public InputError {
  public:
@@ -47,7 +49,9 @@ struct LutFileSummary {
   std::uint32_t camera_count = 0;
   std::uint32_t cell_count = 0;
   std::uint64_t file_bytes = 0;
+  std::vector<RobotPart> parts;
 
+  // Each camera's figures are summed over the parts.
   struct Camera {
     std::string name;
     std::uint64_t cell_table_bytes = 0;   // LUT-1 (0 in a model-mode set)

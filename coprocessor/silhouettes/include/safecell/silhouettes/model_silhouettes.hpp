@@ -7,20 +7,26 @@
 //
 // Used twice: by the model-mode table build (every cell), and by robot removal at run time (one
 // cell per cycle, a few tens of microseconds), so model-mode LUT files need not store LUT-1.
+//
+// Per robot part (robot_parts.hpp): the build takes each part's silhouette on its own, for the
+// vote per part; robot removal takes the whole robot's, the union of the parts'.
 
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/envelope/ball_projection.hpp"
 #include "safecell/envelope/cell_envelope.hpp"
+#include "safecell/robot/kinematics.hpp"
+#include "safecell/robot/robot_parts.hpp"
 #include "safecell/silhouettes/robot_silhouettes.hpp"
 
 namespace safecell {
 
 struct ModelLutOptions {
-  double ball_radius_m = 0.06;  // size of the balls that cover the robot's surface
-  double padding_m = 0.02;      // added all round, for calibration and model error
-  unsigned threads = 0;         // 0: one per hardware thread (table builds only)
+  double ball_radius_m = 0.06;                // size of the balls that cover the robot's surface
+  double padding_m = 0.02;                    // added all round, for calibration and model error
+  unsigned threads = 0;                       // 0: one per hardware thread (table builds only)
+  PartSplit parts = PartSplit::kArmSegments;  // the parts the cameras vote on
 };
 
 class ModelSilhouettes final : public RobotSilhouettes {
@@ -34,14 +40,21 @@ class ModelSilhouettes final : public RobotSilhouettes {
   // Every camera at once: the envelope is computed once.
   void add_silhouettes(CellIndex cell, std::vector<FeatureMask>& masks) const override;
 
+  [[nodiscard]] const std::vector<RobotPart>& parts() const { return parts_; }
+  // Every camera's silhouette of one part: masks[camera] |= it (masks.size() == camera_count(),
+  // else std::invalid_argument; part < parts().size(), else std::out_of_range). Thread-safe.
+  void add_part_silhouettes(CellIndex cell, std::size_t part, FeatureMask* masks) const;
+
   [[nodiscard]] const CellEnvelope& envelope() const { return envelope_; }
   [[nodiscard]] const FeatureGrid& feature_grid() const { return feature_grid_; }
 
  private:
-  // masks[camera - first_camera] |= the silhouette, for cameras first_camera..end_camera-1.
-  void add_cell(CellIndex cell, std::size_t first_camera, std::size_t end_camera,
-                FeatureMask* masks) const;
+  // masks[camera - first_camera] |= the silhouette of bodies `bodies`, for cameras
+  // first_camera..end_camera-1.
+  void add_bodies(CellIndex cell, BodyRange bodies, std::size_t first_camera,
+                  std::size_t end_camera, FeatureMask* masks) const;
 
+  std::vector<RobotPart> parts_;
   CspaceGrid grid_;
   FeatureGrid feature_grid_;
   CellEnvelope envelope_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "safecell/camera/pinhole_camera.hpp"
+#include "safecell/robot/kinematics.hpp"
 #include "safecell/robot/robot_model.hpp"
 #include "safecell/sim/camera_renderer.hpp"
 #include "safecell/sim/human_figure.hpp"
@@ -56,14 +57,15 @@ class SimulatedCell {
   // One camera's object-id image of the still cell with `surfaces` in it (no robot unless among
   // them): CameraRenderer::object_ids().
   cv::Mat object_ids(std::size_t camera_index, const std::vector<SurfaceMesh>& surfaces);
-  // Pixels of one camera the robot (as it appears) covers, occlusion ignored (CV_8UC1, 255 =
-  // covered).
-  cv::Mat robot_coverage(std::size_t camera_index, const std::vector<double>& q);
+  // Pixels of one camera the robot's bodies `bodies` (as they appear; default all) cover,
+  // occlusion ignored (CV_8UC1, 255 = covered).
+  cv::Mat robot_coverage(std::size_t camera_index, const std::vector<double>& q,
+                         BodyRange bodies = {});
   // Pixels of one camera the surfaces cover, occlusion ignored (CV_8UC1, 255 = covered).
   cv::Mat coverage(std::size_t camera_index, const std::vector<SurfaceMesh>& surfaces);
 
  private:
-  std::vector<PlacedShape> robot_shapes(const std::vector<double>& q) const;
+  std::vector<PlacedShape> robot_shapes(const std::vector<double>& q, BodyRange bodies = {}) const;
 
   RobotModel robot_;
   RobotAppearance appearance_;

@@ -14,9 +14,10 @@
 //             scene are traced to a cause, the first that holds:
 //               in_cell      the cell also holds a colliding configuration (dense sampling: the
 //                            price of the cell's size);
-//               visual_hull  at configurations sampled inside the cell, the robot's exact
-//                            silhouettes still meet obstacle pixels in `camera_threshold` cameras
-//                            (phantoms, the visual hull, what stands in front of or behind a body);
+//               visual_hull  at configurations sampled inside the cell, the exact silhouettes of
+//                            one robot part (the parts the cameras vote on) still meet obstacle
+//                            pixels in `camera_threshold` cameras (phantoms, the visual hull, what
+//                            stands in front of or behind a body);
 //               envelope     the rest: only the conservative envelope (LUT-1 with its padding and
 //                            sweeps) meets them.
 // Scene-level counts go to the scene's stratum and to the configuration's stratum both.
@@ -31,6 +32,7 @@
 
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cellsets/cell_set.hpp"
+#include "safecell/robot/robot_parts.hpp"
 #include "safecell/sim/simulated_cell.hpp"
 #include "safecell/validation/body_visibility.hpp"
 
@@ -108,6 +110,8 @@ struct SceneUnderTest {
   // unknown view), and how many needless stops to trace to a cause: none without them.
   const std::vector<FeatureMask>* obstacles = nullptr;
   std::size_t decompose = 0;
+  // The robot parts the cameras voted on (the tables'); null: the whole robot.
+  const std::vector<RobotPart>* parts = nullptr;
 };
 
 inline constexpr double kClearDistance_m = 0.5;
