@@ -18,7 +18,6 @@
 namespace safecell {
 namespace {
 
-constexpr std::size_t kBase = 0;
 constexpr std::size_t kUpperArm = 1;
 constexpr std::size_t kForearm = 2;
 
@@ -124,7 +123,6 @@ TEST_F(RobotPartVote, ObstaclesAtDifferentPartsAreNoCollision) {
     }
   }
   EXPECT_EQ(scenes, 5) << "too few cells where two cameras see different parts apart";
-  (void)kBase;
 }
 
 TEST_F(RobotPartVote, APointOnTheForearmIsCriticalForBothVotes) {

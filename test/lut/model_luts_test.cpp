@@ -83,10 +83,10 @@ void expect_envelope_holds_robot(const CellModel& cell, const CspaceGrid& grid,
 
 CellEnvelope envelope_with_head(const CellModel& cell, const CspaceGrid& grid,
                                 std::size_t max_head_prefixes,
-                                std::vector<std::size_t> part_starts = {}) {
+                                const std::vector<std::size_t>& part_starts = {}) {
   const ModelLutOptions options;
   return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                      options.padding_m, std::move(part_starts), max_head_prefixes);
+                      options.padding_m, part_starts, max_head_prefixes);
 }
 
 TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {

@@ -66,7 +66,7 @@ struct CellEnvelope::CellFrames {
 };
 
 CellEnvelope::CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid,
-                           double padding_m, std::vector<std::size_t> part_starts,
+                           double padding_m, const std::vector<std::size_t>& part_starts,
                            std::size_t max_head_prefixes)
     : robot_(robot), robot_balls_(std::move(balls)), grid_(grid), padding_m_(padding_m) {
   if (grid.joint_count() != robot.dof()) {

@@ -19,7 +19,7 @@ CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
     part_starts.push_back(part.first_body);
   }
   return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                      options.padding_m, std::move(part_starts));
+                      options.padding_m, part_starts);
 }
 
 }  // namespace

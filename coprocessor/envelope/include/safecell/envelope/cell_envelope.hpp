@@ -56,7 +56,7 @@ class CellEnvelope {
   // count is not the robot's, the padding is negative or not finite, or a part start is not a
   // body.
   CellEnvelope(const RobotModel& robot, RobotBalls balls, const CspaceGrid& grid, double padding_m,
-               std::vector<std::size_t> part_starts = {},
+               const std::vector<std::size_t>& part_starts = {},
                std::size_t max_head_prefixes = kMaxHeadPrefixes);
 
   // The envelope of one cell, in the robot base frame (= the cell frame), into `balls` (cleared
