@@ -131,10 +131,15 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
       }
       suspicious_lines_.emplace_back(tables.pixel_to_cells.axes(), cells);
       observable_lines_.emplace_back(tables.pixel_to_cells.axes(), cells);
+      // What the camera sees of the part: the union of the coarsest level's entries, which is
+      // the union of all pixels' (a block holds its pixels' cells) at a fraction of the work.
+      const PixelToCellsTable& coarsest = tables.entries_of_level(tables.pixel_blocks.size());
+      for (std::size_t entry = 0; entry < coarsest.pixel_count(); ++entry) {
+        coarsest.add_cells(entry, observable_lines_.back());
+      }
       FeatureMask reach(luts.columns, luts.rows);
       for (std::size_t pixel = 0; pixel < tables.pixel_to_cells.pixel_count(); ++pixel) {
         if (tables.pixel_to_cells.entry_bytes(pixel) == 0) continue;
-        tables.pixel_to_cells.add_cells(pixel, observable_lines_.back());
         reach.set(static_cast<int>(pixel % static_cast<std::size_t>(luts.columns)),
                   static_cast<int>(pixel / static_cast<std::size_t>(luts.columns)));
       }
