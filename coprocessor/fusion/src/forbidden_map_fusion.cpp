@@ -38,14 +38,6 @@ CellSet observable_cells(const PixelToCellsTable& table) {
   return cells;
 }
 
-CellSet observable_cells(const CameraLuts& camera) {
-  if (camera.parts.empty())
-    throw std::invalid_argument("camera '" + camera.camera + "' has no LUT-2");
-  CellSet cells(camera.parts.front().pixel_to_cells.cell_count());
-  for (const PartLuts& part : camera.parts) cells |= observable_cells(part.pixel_to_cells);
-  return cells;
-}
-
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
                              const RobotAtExposure& where, const FusionSettings& settings,
                              std::vector<FeatureMask>& robot, std::vector<FeatureMask>& obstacles) {

@@ -56,7 +56,7 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
   set.columns = cell.feature_grid.columns();
   set.rows = cell.feature_grid.rows();
   // A recording sees the whole robot at once: one part.
-  set.parts = {RobotPart{"robot", 0, cell.robot->dof() + 1}};
+  set.parts = robot_parts(*cell.robot, PartSplit::kWholeRobot);
   set.cameras = invert_cell_tables(cell, grid, 1, std::move(cell_tables), true, threads, progress);
   ModelLutOptions model_options;
   model_options.threads = threads;

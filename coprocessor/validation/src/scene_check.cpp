@@ -78,7 +78,7 @@ NeedlessStopCause cause_of_needless_stop(const CellModel& cell, const CspaceGrid
       return NeedlessStopCause::kInCell;
     }
   }
-  const std::vector<RobotPart> whole_robot{RobotPart{"robot", 0, cell.robot->dof() + 1}};
+  const std::vector<RobotPart> whole_robot = robot_parts(*cell.robot, PartSplit::kWholeRobot);
   const std::vector<RobotPart>& parts =
       under_test.parts != nullptr ? *under_test.parts : whole_robot;
   const FeatureGrid& features = cell.feature_grid;

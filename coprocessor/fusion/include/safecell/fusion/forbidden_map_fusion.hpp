@@ -156,8 +156,6 @@ void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int
 
 // Every cell some pixel of the table back-projects to.
 [[nodiscard]] CellSet observable_cells(const PixelToCellsTable& table);
-// Every cell some pixel of some part's table of the camera back-projects to.
-[[nodiscard]] CellSet observable_cells(const CameraLuts& camera);
 
 // Where the robot is, for robot removal: its cell, and its joint values if known.
 struct RobotAtExposure {
