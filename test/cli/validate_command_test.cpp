@@ -36,6 +36,7 @@ TEST(ValidateCommand, ReportsTheIssuesKeysAndMissesNothing) {
   EXPECT_TRUE(report["strata"].contains("scene/against_arm"));
   EXPECT_TRUE(report["strata"].contains("configs/near_robot"));
   EXPECT_TRUE(report["unseen_reasons"].contains("hidden_by_robot"));
+  EXPECT_FALSE(report["hidden_votes"].get<bool>()) << "the paper's vote is the default";
 }
 
 TEST(ValidateCommand, ANegativeControlFailsTheRun) {

@@ -75,7 +75,7 @@ void print_report(const ValidationRun& run, const ValidationReport& report, std:
   out << "validated " << grouped(report.scenes) << " scenes (seed " << run.seed << ", shards "
       << run.shards.size() << " of " << run.shard_count << ", " << run.removal
       << " robot removal, camera threshold " << run.camera_threshold << ", cameras voting per "
-      << run.robot_parts << ")"
+      << run.robot_parts << (run.hidden_votes ? ", hidden votes" : ", no hidden votes") << ")"
       << (run.negative_control == "none" ? "" : ", NEGATIVE CONTROL " + run.negative_control)
       << "\n  " << grouped(report.configs_checked)
       << " configurations against FCL and the renderer's object ids: colliding "
@@ -153,6 +153,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   validation.limits = SceneLimits{options.humans, options.objects};
   validation.fusion.camera_threshold = cell.camera_threshold;
   validation.fusion.removal = removal_of(options.removal);
+  validation.fusion.hidden_votes = options.hidden_votes;
   validation.negative_control = control_of(options.negative_control);
   validation.shard = shard_of(options.shard, options.scenes);
   validation.threads = options.threads;
@@ -177,6 +178,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   run.padding_m = options.padding_m;
   run.ball_radius_m = options.ball_radius_m;
   run.robot_parts = options.robot_parts;
+  run.hidden_votes = options.hidden_votes;
   run.m_max_m = cell.config.m_max_m;
   run.model_error = validation.model_error;
   run.shard_count = validation.shard.count;
@@ -206,7 +208,7 @@ int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
       merged_run.shards.clear();
     } else if (!same_run(run, merged_run)) {
       throw InputError(path + ": a shard of another run than " + options.files[0] +
-                       " (seed, scenes, configs, threshold, removal, control, table "
+                       " (seed, scenes, configs, threshold, removal, votes, control, table "
                        "settings, model error and shard count must agree)");
     }
     for (const std::size_t shard : run.shards) {
@@ -271,6 +273,11 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
       ->add_option("--robot-parts", validate->robot_parts,
                    "The robot parts the cameras vote on: arm-segments (base | links 1-2 | the "
                    "rest), per-link or whole-robot (the paper's vote)")
+      ->capture_default_str();
+  validate_command
+      ->add_option("--hidden-votes", validate->hidden_votes,
+                   "Whether a camera whose view of a cell the robot hides votes for it where "
+                   "another camera sees an obstacle: on, or off (the paper's vote)")
       ->capture_default_str();
   validate_command
       ->add_option("--m-max", validate->m_max_m,

@@ -59,8 +59,8 @@ bool same_run(const ValidationRun& a, const ValidationRun& b) {
          a.camera_threshold == b.camera_threshold && a.removal == b.removal &&
          a.negative_control == b.negative_control && a.padding_m == b.padding_m &&
          a.ball_radius_m == b.ball_radius_m && a.robot_parts == b.robot_parts &&
-         a.m_max_m == b.m_max_m && same_error(a.model_error, b.model_error) &&
-         a.shard_count == b.shard_count;
+         a.hidden_votes == b.hidden_votes && a.m_max_m == b.m_max_m &&
+         same_error(a.model_error, b.model_error) && a.shard_count == b.shard_count;
 }
 
 nlohmann::ordered_json validation_json(const ValidationRun& run, const ValidationReport& report) {
@@ -110,6 +110,7 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["padding_m"] = run.padding_m;
   json["ball_radius_m"] = run.ball_radius_m;
   json["robot_parts"] = run.robot_parts;
+  json["hidden_votes"] = run.hidden_votes;
   json["m_max_m"] = run.m_max_m;
   json["model_error"] = {{"camera_rotation_deg", run.model_error.camera_rotation_deg},
                          {"camera_translation_m", run.model_error.camera_translation_m},
@@ -194,6 +195,8 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
   // whole robot.
   run.robot_parts = json.contains("robot_parts") ? field<std::string>(json, "robot_parts", source)
                                                  : std::string("whole-robot");
+  // Reports written before hidden votes had none.
+  run.hidden_votes = json.contains("hidden_votes") && field<bool>(json, "hidden_votes", source);
   run.m_max_m = field<double>(json, "m_max_m", source);
   const auto error = field<nlohmann::json>(json, "model_error", source);
   run.model_error.camera_rotation_deg = field<double>(error, "camera_rotation_deg", source);

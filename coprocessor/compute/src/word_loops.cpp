@@ -28,6 +28,15 @@ SAFECELL_CPU_CLONES void or_and_words(std::uint64_t* __restrict to,
   for (; w < count; ++w) to[w] |= a[w] & b[w];
 }
 
+SAFECELL_CPU_CLONES void and_words(std::uint64_t* __restrict to,
+                                   const std::uint64_t* __restrict from, std::size_t count) {
+  std::size_t w = 0;
+  for (; w + kBlock <= count; w += kBlock) {
+    for (std::size_t k = 0; k < kBlock; ++k) to[w + k] &= from[w + k];
+  }
+  for (; w < count; ++w) to[w] &= from[w];
+}
+
 SAFECELL_CPU_CLONES bool any_missing(const std::uint64_t* set, const std::uint64_t* subset,
                                      std::size_t count) {
   std::uint64_t missing[kBlock]{};

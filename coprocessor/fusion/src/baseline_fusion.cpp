@@ -32,11 +32,13 @@ BaselineFusion::BaselineFusion(const LutSet& luts, const RobotSilhouettes& silho
   for (std::size_t camera = 0; camera < luts.cameras.size(); ++camera) {
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
+    hidden_.emplace_back(luts.columns, luts.rows);
   }
   counters_.assign(cells, 0);
   stamps_.assign(cells, 0);
   forbidden_ = CellSet(cells);
   pixel_cells_ = CellSet(cells);
+  seen_ = CellSet(cells);
 }
 
 void BaselineFusion::count_cell(CellIndex cell, std::uint8_t camera_stamp) {
@@ -45,51 +47,63 @@ void BaselineFusion::count_cell(CellIndex cell, std::uint8_t camera_stamp) {
   ++counters_[cell];
 }
 
+void BaselineFusion::count_pixels(const FeatureMask& pixels, const PixelToCellsTable& table,
+                                  std::uint8_t camera_stamp, bool seen) {
+  for (int row = 0; row < pixels.rows(); ++row) {
+    for (int column = 0; column < pixels.columns(); ++column) {
+      if (!pixels.test(column, row)) continue;
+      const std::size_t pixel =
+          static_cast<std::size_t>(row) * static_cast<std::size_t>(pixels.columns()) +
+          static_cast<std::size_t>(column);
+      // The pixel's cells each once, as the paper's list holds them: its runs may overlap, so
+      // they are gathered first.
+      pixel_cells_.clear();
+      table.add_cells(pixel, pixel_cells_);
+      if (seen) seen_ |= pixel_cells_;
+      const std::vector<std::uint64_t>& words = pixel_cells_.words();
+      for (std::size_t word = 0; word < words.size(); ++word) {
+        for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+          count_cell(
+              static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits))),
+              camera_stamp);
+        }
+      }
+    }
+  }
+}
+
 const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observations,
                                     CellIndex robot_cell) {
   if (observations.size() != luts_.cameras.size()) {
     throw std::invalid_argument("baseline fusion: wrong number of camera observations");
   }
   if (robot_cell >= counters_.size()) throw std::out_of_range("robot cell outside the grid");
-  remove_robot_from_views(observations, {silhouettes_, nullptr, robot_cell, {}}, settings_, robot_,
-                          obstacles_);
+  remove_robot_from_views(observations, {silhouettes_, nullptr, robot_cell, {}}, settings_,
+                          {robot_, obstacles_, hidden_});
   forbidden_ = luts_.static_cells;
   const auto threshold = static_cast<std::uint8_t>(settings_.camera_threshold);
   const std::size_t cameras = observations.size();
   for (std::size_t part = 0; part < luts_.parts.size(); ++part) {
     std::fill(counters_.begin(), counters_.end(), 0);
     std::fill(stamps_.begin(), stamps_.end(), 0);
+    seen_.clear();
     for (std::size_t camera = 0; camera < cameras; ++camera) {
       const auto stamp = static_cast<std::uint8_t>(camera + 1);
       if (!observations[camera].known) {
-        for (const CellIndex cell : observable_[part * cameras + camera]) count_cell(cell, stamp);
+        for (const CellIndex cell : observable_[part * cameras + camera]) {
+          count_cell(cell, stamp);
+          seen_.set(cell);
+        }
         continue;
       }
-      const FeatureMask& obstacles = obstacles_[camera];
       const PixelToCellsTable& table = luts_.cameras[camera].parts[part].pixel_to_cells;
-      for (int row = 0; row < obstacles.rows(); ++row) {
-        for (int column = 0; column < obstacles.columns(); ++column) {
-          if (!obstacles.test(column, row)) continue;
-          const std::size_t pixel =
-              static_cast<std::size_t>(row) * static_cast<std::size_t>(obstacles.columns()) +
-              static_cast<std::size_t>(column);
-          // The pixel's cells each once, as the paper's list holds them: its runs may overlap,
-          // so they are gathered first.
-          pixel_cells_.clear();
-          table.add_cells(pixel, pixel_cells_);
-          const std::vector<std::uint64_t>& words = pixel_cells_.words();
-          for (std::size_t word = 0; word < words.size(); ++word) {
-            for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
-              count_cell(static_cast<CellIndex>(word * 64 +
-                                                static_cast<std::size_t>(std::countr_zero(bits))),
-                         stamp);
-            }
-          }
-        }
-      }
+      count_pixels(obstacles_[camera], table, stamp, true);
+      // Hidden pixels count the camera too (none without hidden votes); they see nothing.
+      count_pixels(hidden_[camera], table, stamp, false);
     }
     for (CellIndex cell = 0; cell < counters_.size(); ++cell) {
-      if (counters_[cell] >= threshold) forbidden_.set(cell);
+      // Without hidden votes every counted cell was seen.
+      if (counters_[cell] >= threshold && seen_.test(cell)) forbidden_.set(cell);
     }
   }
   return forbidden_;

@@ -40,23 +40,34 @@ CellSet observable_cells(const PixelToCellsTable& table) {
 
 void remove_robot_from_views(const std::vector<CameraObservation>& observations,
                              const RobotAtExposure& where, const FusionSettings& settings,
-                             std::vector<FeatureMask>& robot, std::vector<FeatureMask>& obstacles) {
+                             const ViewsWithoutRobot& views) {
   // Every camera's silhouette in one call (the robot's balls or envelope are placed once), even
   // those whose view is unknown: cheaper than asking camera by camera.
-  for (FeatureMask& mask : robot) mask.clear();
+  for (FeatureMask& mask : views.robot) mask.clear();
   if (settings.removal == RobotRemoval::kOcclusionAware && where.at_configuration != nullptr &&
       !where.q.empty()) {
-    where.at_configuration->add_silhouettes(where.q, robot);
+    where.at_configuration->add_silhouettes(where.q, views.robot);
   } else {
-    where.cell_silhouettes.add_silhouettes(where.cell, robot);
+    where.cell_silhouettes.add_silhouettes(where.cell, views.robot);
   }
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+    FeatureMask& obstacles = views.obstacles[camera];
+    FeatureMask& hidden = views.hidden[camera];
     if (!observations[camera].known) {
-      obstacles[camera].clear();
+      obstacles.clear();
+      hidden.clear();
       continue;
     }
-    remove_robot(observations[camera].blocked, robot[camera], settings.removal, obstacles[camera],
+    const FeatureMask& blocked = observations[camera].blocked;
+    remove_robot(blocked, views.robot[camera], settings.removal, obstacles,
                  settings.occlusion_reach);
+    if (!settings.hidden_votes) {
+      hidden.clear();
+      continue;
+    }
+    hidden = blocked;  // same size after the first cycle: no allocation
+    hidden &= views.robot[camera];
+    hidden.subtract(obstacles);
   }
 }
 
@@ -148,11 +159,16 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
     }
     robot_.emplace_back(luts.columns, luts.rows);
     obstacles_.emplace_back(luts.columns, luts.rows);
+    hidden_.emplace_back(luts.columns, luts.rows);
     remaining_.emplace_back(luts.columns, luts.rows);
+    if (settings.hidden_votes) voting_lines_.push_back(observable_lines_.front());
   }
   camera_lines_.reserve(cameras);
-  voters_.assign(cameras, false);
+  seeing_.assign(cameras, false);
+  hiding_.assign(cameras, false);
+  voting_.assign(cameras, false);
   const std::size_t words = observable_lines_.front().lines().size();
+  seen_lines_.assign(words, 0);
   at_least_.assign(static_cast<std::size_t>(settings.camera_threshold),
                    std::vector<std::uint64_t>(words, 0));
   part_critical_lines_.assign(words, 0);
@@ -160,6 +176,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
   critical_ = CellSet(cells);
   forbidden_ = CellSet(cells);
   counts_.obstacle_pixels.assign(cameras, 0);
+  counts_.hidden_pixels.assign(cameras, 0);
   counts_.saturated.assign(luts.parts.size() * cameras, false);
   counts_.part_voted.assign(luts.parts.size(), false);
   counts_.part_critical.assign(luts.parts.size(), false);
@@ -190,24 +207,29 @@ void ForbiddenMapFusion::check(const std::vector<CameraObservation>& observation
   }
 }
 
-std::size_t ForbiddenMapFusion::find_voters(const std::vector<CameraObservation>& observations,
-                                            std::size_t part) {
-  std::size_t count = 0;
+ForbiddenMapFusion::VoterCounts ForbiddenMapFusion::find_voters(
+    const std::vector<CameraObservation>& observations, std::size_t part) {
+  VoterCounts counts;
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
-    voters_[camera] =
-        !observations[camera].known || obstacles_[camera].intersects(reach_[slot(part, camera)]);
-    if (voters_[camera]) ++count;
+    const FeatureMask& reach = reach_[slot(part, camera)];
+    const bool unknown = !observations[camera].known;
+    seeing_[camera] = unknown || obstacles_[camera].intersects(reach);
+    hiding_[camera] = !unknown && settings_.hidden_votes && hidden_[camera].intersects(reach);
+    voting_[camera] = seeing_[camera] || hiding_[camera];
+    counts.seeing += seeing_[camera] ? 1U : 0U;
+    counts.voting += voting_[camera] ? 1U : 0U;
   }
-  return count;
+  return counts;
 }
 
-bool ForbiddenMapFusion::back_project(std::size_t part, std::size_t camera) {
-  CellLines& suspicious = suspicious_lines_[slot(part, camera)];
-  suspicious.clear();
+bool ForbiddenMapFusion::back_project(std::size_t part, std::size_t camera,
+                                      const FeatureMask& pixels, const FeatureMask& present,
+                                      CellLines& into) {
+  CellLines& suspicious = into;
   const PartLuts& tables = luts_.cameras[camera].parts[part];
   CellLines& observable = observable_lines_[slot(part, camera)];
   FeatureMask& remaining = remaining_[camera];
-  remaining = obstacles_[camera];
+  remaining = pixels;
   // Once the set holds every cell the camera can see, no pixel can add to it. Testing that costs
   // about two passes over the set (fold and compare), so it is done each time twice as many lines
   // have been written (tried on the benchmark scenes: checking 4 or 16 times as often costs more
@@ -219,11 +241,11 @@ bool ForbiddenMapFusion::back_project(std::size_t part, std::size_t camera) {
     lines_since_check = 0;
     return suspicious.contains(observable);
   };
-  const FeatureMask& obstacles = obstacles_[camera];
-  // An entry whose left or upper neighbour (of its level) is all obstacles adds only its
-  // difference to it, the shorter where both are: the neighbour's cells are in the set already -
-  // it came earlier in this level's row order, or lay inside a coarser block added before (blocks
-  // are aligned, so it is wholly in one or not).
+  const FeatureMask& obstacles = present;
+  // An entry whose left or upper neighbour (of its level) is all present adds only its
+  // difference to it, the shorter where both are: every pixel of the neighbour has its cells in
+  // the set by the end of the call (it was there before, or is added in this call, as part of
+  // some block or alone), so the union comes out whole whatever the order.
   const auto table_for = [&tables](std::size_t level, std::size_t entry, bool left_is_in,
                                    bool upper_is_in) -> const PixelToCellsTable& {
     const PixelToCellsTable* cheapest = &tables.entries_of_level(level);
@@ -282,34 +304,59 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
     throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
   }
   remove_robot_from_views(observations, {silhouettes_, at_configuration_, robot_cell, q}, settings_,
-                          robot_, obstacles_);
+                          {robot_, obstacles_, hidden_});
   for (std::size_t camera = 0; camera < observations.size(); ++camera) {
-    counts_.obstacle_pixels[camera] =
-        observations[camera].known ? obstacles_[camera].count() : std::size_t{0};
+    const bool known = observations[camera].known;
+    counts_.obstacle_pixels[camera] = known ? obstacles_[camera].count() : std::size_t{0};
+    counts_.hidden_pixels[camera] = known ? hidden_[camera].count() : std::size_t{0};
   }
   std::fill(critical_lines_.begin(), critical_lines_.end(), 0);
   const auto threshold = static_cast<std::size_t>(settings_.camera_threshold);
+  const bool hidden_votes = settings_.hidden_votes;
   for (std::size_t part = 0; part < luts_.parts.size(); ++part) {
-    const bool voted = find_voters(observations, part) >= threshold;
+    const VoterCounts voters = find_voters(observations, part);
+    const bool voted = voters.seeing >= 1 && voters.voting >= threshold;
     counts_.part_voted[part] = voted;
     counts_.part_critical[part] = false;
     camera_lines_.clear();
+    if (hidden_votes) std::fill(seen_lines_.begin(), seen_lines_.end(), 0);
     for (std::size_t camera = 0; camera < observations.size(); ++camera) {
       const std::size_t at = slot(part, camera);
-      suspicious_lines_[at].clear();
+      CellLines& suspicious = suspicious_lines_[at];
+      suspicious.clear();
       counts_.saturated[at] = false;
-      if (!voted || !voters_[camera]) continue;
+      if (!voted || !voting_[camera]) continue;
       if (!observations[camera].known) {
         camera_lines_.push_back(observable_lines_[at].lines());
+        if (hidden_votes)
+          or_words(seen_lines_.data(), camera_lines_.back().data(), seen_lines_.size());
         continue;
       }
-      counts_.saturated[at] = back_project(part, camera);
-      suspicious_lines_[at].fold();
-      camera_lines_.push_back(suspicious_lines_[at].lines());
+      if (seeing_[camera]) {
+        counts_.saturated[at] =
+            back_project(part, camera, obstacles_[camera], obstacles_[camera], suspicious);
+      }
+      suspicious.fold();
+      if (hidden_votes) or_words(seen_lines_.data(), suspicious.lines().data(), seen_lines_.size());
+      if (!hiding_[camera] || counts_.saturated[at]) {
+        camera_lines_.push_back(suspicious.lines());
+        continue;
+      }
+      // Suspicious or hidden: what the camera sees, then what its robot pixels may hide (all
+      // its blocked pixels are then in the set).
+      CellLines& voting = voting_lines_[camera];
+      voting = suspicious;
+      back_project(part, camera, hidden_[camera], observations[camera].blocked, voting);
+      voting.fold();
+      camera_lines_.push_back(voting.lines());
     }
     if (!voted) continue;
     // Counted in the line layout, so that only the result is packed.
     count_at_least(camera_lines_, settings_.camera_threshold, at_least_, part_critical_lines_);
+    // With hidden votes some camera must see an obstacle through the part.
+    if (hidden_votes) {
+      and_words(part_critical_lines_.data(), seen_lines_.data(), part_critical_lines_.size());
+    }
     counts_.part_critical[part] =
         std::any_of(part_critical_lines_.begin(), part_critical_lines_.end(),
                     [](std::uint64_t word) { return word != 0; });

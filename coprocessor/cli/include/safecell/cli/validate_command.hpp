@@ -24,6 +24,7 @@ struct ValidateOptions {
   double padding_m = 0.02;
   double ball_radius_m = 0.06;
   std::string robot_parts = "arm-segments";  // the parts the cameras vote on (robot_parts.hpp)
+  bool hidden_votes = false;                 // the robot's blocked pixels vote as hidden
   double m_max_m = 0.0;                      // 0: the cell's
   int camera_threshold = 0;                  // 0: the cell's
   // Model error applied to the simulated world (model_error.hpp); --model-error sets the

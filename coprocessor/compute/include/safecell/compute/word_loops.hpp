@@ -15,6 +15,9 @@ void or_words(std::uint64_t* __restrict to, const std::uint64_t* __restrict from
 // to[w] |= a[w] & b[w] for w < count.
 void or_and_words(std::uint64_t* __restrict to, const std::uint64_t* __restrict a,
                   const std::uint64_t* __restrict b, std::size_t count);
+// to[w] &= from[w] for w < count.
+void and_words(std::uint64_t* __restrict to, const std::uint64_t* __restrict from,
+               std::size_t count);
 // Whether some w < count has a bit of subset[w] that set[w] lacks.
 [[nodiscard]] bool any_missing(const std::uint64_t* set, const std::uint64_t* subset,
                                std::size_t count);
