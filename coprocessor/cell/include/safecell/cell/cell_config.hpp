@@ -139,7 +139,7 @@ struct CellConfig {
   FeatureGridConfig feature_grid;
   BlockedCellConfig blocked_cells;
   // A configuration is critical when at least this many cameras see it blocked (paper §4.4).
-  // Unset: 2, or 1 with a single camera.
+  // Unset: default_camera_threshold(cameras) (cell_model.hpp).
   std::optional<int> camera_threshold;
   SourceLine camera_threshold_at;
   // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`
