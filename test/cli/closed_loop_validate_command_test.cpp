@@ -98,10 +98,15 @@ TEST(ClosedLoopValidate, AbsurdSettingsAreRefused) {
         std::vector<std::string>{"validate", "--closed-loop", "--latency", "40"},
         std::vector<std::string>{"validate", "--closed-loop", "--fps", "1000"},
         std::vector<std::string>{"validate", "--closed-loop", "--negative-control",
-                                 "empty-masks"}}) {
+                                 "empty-masks"},
+        // An option of the other validation would be ignored: it is refused instead.
+        std::vector<std::string>{"validate", "--closed-loop", "--robot-parts", "per-link"},
+        std::vector<std::string>{"validate", "--closed-loop", "--scenes", "3"},
+        std::vector<std::string>{"validate", "--scenarios", "3", "--scenes", "1"}}) {
     const auto run = test::safecell_cli(args);
     EXPECT_EQ(run.exit_code, 2) << failing_input(args) << "\n" << run.err;
-    EXPECT_NE(run.err.find(args[2]), std::string::npos) << run.err;  // names the option
+    const std::string& option = args[1] == "--closed-loop" ? args[2] : args[1];
+    EXPECT_NE(run.err.find(option), std::string::npos) << run.err;  // names the option
   }
 }
 

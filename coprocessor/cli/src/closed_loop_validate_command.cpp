@@ -209,7 +209,8 @@ int run_closed_loop_validate(const ClosedLoopValidateOptions& options, std::ostr
                              std::ostream& err) {
   check_options(options);
   const fs::path program = find_controller_program(options.controller_program);
-  SimulatedSensing sensing(options.cell_path, options.lut_cache, options.seed, err);
+  SimulatedSensing sensing(options.cell_path, options.lut_cache, options.seed, err,
+                           options.camera_threshold);
   const fs::path out_dir(options.out_dir);
   fs::create_directories(out_dir);
   LockstepParts parts{sensing.cell,

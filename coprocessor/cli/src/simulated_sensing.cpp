@@ -21,6 +21,12 @@ SimulatedReference reference_images(SimulatedCell& sim, const CellModel& cell, s
   return simulated_reference(sim, cell, kReferenceFrames, seed);
 }
 
+CellModel cell_with_threshold(const std::string& cell_path, int camera_threshold) {
+  CellConfig config = load_cell_file_or_default(cell_path);
+  if (camera_threshold > 0) config.camera_threshold = camera_threshold;
+  return load_cell_model(std::move(config));
+}
+
 FusionSettings fusion_settings(const CellModel& cell) {
   FusionSettings fusion;
   fusion.camera_threshold = cell.camera_threshold;
@@ -30,8 +36,8 @@ FusionSettings fusion_settings(const CellModel& cell) {
 }  // namespace
 
 SimulatedSensing::SimulatedSensing(const std::string& cell_path, const std::string& lut_cache,
-                                   std::uint64_t seed, std::ostream& log)
-    : cell(load_cell_model(load_cell_file_or_default(cell_path))),
+                                   std::uint64_t seed, std::ostream& log, int camera_threshold)
+    : cell(cell_with_threshold(cell_path, camera_threshold)),
       grid(make_grid(cell.config)),
       luts(cell_luts(cell, grid, ModelLutOptions{}, lut_cache, log)),
       silhouettes(cell, grid, ModelLutOptions{}),

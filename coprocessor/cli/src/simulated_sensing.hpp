@@ -18,10 +18,10 @@
 namespace safecell {
 
 struct SimulatedSensing {
-  // cell_path: empty for the built-in default cell; lut_cache: empty for the default folder.
-  // Messages (table building, reference images) go to `log`.
+  // cell_path: empty for the built-in default cell; lut_cache: empty for the default folder;
+  // camera_threshold: 0 for the cell's. Messages (table building, reference images) go to `log`.
   SimulatedSensing(const std::string& cell_path, const std::string& lut_cache, std::uint64_t seed,
-                   std::ostream& log);
+                   std::ostream& log, int camera_threshold = 0);
   SimulatedSensing(const SimulatedSensing&) = delete;
   SimulatedSensing& operator=(const SimulatedSensing&) = delete;
 

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "command_line.hpp"
@@ -28,6 +29,39 @@ RobotRemoval removal_of(const std::string& text) {
   if (text == "occlusion-aware") return RobotRemoval::kOcclusionAware;
   if (text == "plain") return RobotRemoval::kPlain;
   bad_option("--removal", text, "occlusion-aware or plain");
+}
+
+// The options that only the closed loop reads, and those both read: any other given with
+// --closed-loop, or one of these without it, would be ignored, so it is refused.
+bool closed_loop_only(const std::string& name) {
+  static const std::set<std::string> names{"--scenarios", "--first",       "--fps",
+                                           "--latency",   "--max-seconds", "--task-pool",
+                                           "--out",       "--trace",       "--controller-program"};
+  return names.count(name) > 0;
+}
+
+bool read_by_both(const std::string& name) {
+  static const std::set<std::string> names{"--help",
+                                           "--cell",
+                                           "--seed",
+                                           "--lut-cache",
+                                           "--json",
+                                           "--closed-loop",
+                                           "--negative-control",
+                                           "--camera-threshold"};
+  return names.count(name) > 0;
+}
+
+void refuse_options_of_the_other_loop(const CLI::App& validate, bool closed_loop) {
+  for (const CLI::Option* option : validate.get_options()) {
+    if (option->count() == 0) continue;
+    const std::string name = option->get_name(false, true);
+    if (read_by_both(name) || closed_loop_only(name) == closed_loop) continue;
+    throw InputError(name + (closed_loop
+                                 ? " applies to the open-loop validation only (without "
+                                   "--closed-loop)"
+                                 : " applies to the closed loop only (with --closed-loop)"));
+  }
 }
 
 PartSplit parts_of(const std::string& text) {
@@ -382,11 +416,13 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
     validate->lens_k1_set = lens_k1->count() > 0;
     if (*closed_loop) {
       loop->cell_path = validate->cell_path;
+      loop->camera_threshold = validate->camera_threshold;
       loop->lut_cache = validate->lut_cache;
       loop->seed = validate->seed;
       loop->json = validate->json;
       loop->look_ahead_off = validate->negative_control == "look-ahead-off";
       line.action = [=, &line] {
+        refuse_options_of_the_other_loop(*validate_command, true);
         if (!loop->look_ahead_off && validate->negative_control != "none") {
           bad_option("--negative-control", validate->negative_control,
                      "none or look-ahead-off with --closed-loop");
@@ -395,7 +431,10 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
       };
       return;
     }
-    line.action = [=, &line] { line.exit_code = run_validate(*validate, line.out, line.err); };
+    line.action = [=, &line] {
+      refuse_options_of_the_other_loop(*validate_command, false);
+      line.exit_code = run_validate(*validate, line.out, line.err);
+    };
   });
 }
 

@@ -14,8 +14,9 @@
 namespace safecell {
 
 struct ClosedLoopValidateOptions {
-  std::string cell_path;  // empty: the built-in default cell
-  std::string lut_cache;  // empty: the default cache folder
+  std::string cell_path;     // empty: the built-in default cell
+  std::string lut_cache;     // empty: the default cache folder
+  int camera_threshold = 0;  // 0: the cell's
   std::size_t scenarios = 20;
   std::uint64_t seed = 1;
   std::size_t first = 0;  // the index of the first scenario (to run one again alone)
