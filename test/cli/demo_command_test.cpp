@@ -121,6 +121,19 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
       summary["stops"].get<int>() + summary["slowdowns"].get<int>() + summary["faults"].get<int>(),
       1);
   EXPECT_LT(summary["min_human_distance_m"].get<double>(), 2.0);
+  // Every slow-down or stop for a forbidden cell in the robot's way was explained with the map the
+  // controller held, and that map did forbid the cell: never "not forbidden" (controller and
+  // coprocessor would disagree on the cell) nor "no longer kept" (the views were lost).
+  const auto& explanations = summary["stop_explanations"];
+  if (summary["slowdowns"].get<int>() > 0) {
+    EXPECT_GE(explanations.size(), 1U) << run.err;
+  }
+  for (const auto& stop : explanations) {
+    const std::string text = stop["text"].get<std::string>();
+    EXPECT_EQ(text.find("not forbidden"), std::string::npos) << text;
+    EXPECT_EQ(text.find("no longer kept"), std::string::npos) << text;
+    EXPECT_NE(text.find("cell "), std::string::npos) << text;
+  }
 
   const std::string page = read_text(out / "index.html");
   const std::vector<std::string> images = attribute_values(page, "<img src=\"");

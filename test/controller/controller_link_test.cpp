@@ -244,11 +244,18 @@ TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {
   joints.joint_count = 6;
   joints.position_rad[2] = 0.5;
   joints.read_time_ns = 22 * kMs;
-  link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0, 0,
-                         22 * kMs);
+  MotionReport motion{safecell_v1_ControllerState_CONTROLLER_STATE_SLOWED, 0.5};
+  motion.critical_joint = 2;
+  motion.has_blocking_cell = true;
+  motion.blocking_cell = 77;
+  link_.send_joint_state(joints, motion, 22 * kMs);
   const safecell_v1_Message sent = last_sent();
   ASSERT_EQ(sent.which_body, safecell_v1_Message_joint_state_tag);
   EXPECT_EQ(sent.body.joint_state.applied_map_version, 1u);
+  EXPECT_EQ(sent.body.joint_state.state, safecell_v1_ControllerState_CONTROLLER_STATE_SLOWED);
+  EXPECT_EQ(sent.body.joint_state.critical_joint, 2u);
+  EXPECT_TRUE(sent.body.joint_state.has_blocking_cell);
+  EXPECT_EQ(sent.body.joint_state.blocking_cell, 77u);
   EXPECT_EQ(sent.body.joint_state.position_rad_count, 6u);
   EXPECT_DOUBLE_EQ(sent.body.joint_state.position_rad[2], 0.5);
 }

@@ -146,8 +146,8 @@ class ControllerSide {
         JointSample joints;
         joints.joint_count = 6;
         joints.read_time_ns = now();
-        link_.send_joint_state(joints, safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0, 0,
-                               now());
+        link_.send_joint_state(
+            joints, MotionReport{safecell_v1_ControllerState_CONTROLLER_STATE_MOVING, 1.0}, now());
         next_joint_state += 4'000'000;
       }
     }

@@ -85,6 +85,9 @@ pb::Message random_message(int which, std::mt19937_64& rng) {
       j.set_applied_map_version(any_u64(rng));
       j.set_state(static_cast<pb::ControllerState>(rng() % 6));
       j.set_speed_scale(any_double(rng));
+      j.set_critical_joint(any_u32(rng));
+      j.set_has_blocking_cell(rng() % 2 == 0);
+      j.set_blocking_cell(any_u32(rng));
       break;
     }
     case 5:

@@ -123,8 +123,13 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
     sample.velocity_rad_s[j] = report_.joints.velocity_rad_s[j];
   }
   const std::uint8_t critical = report_.look_ahead.critical_joint;
-  link_.send_joint_state(sample, wire_state(report_.state), report_.speed_scale,
-                         critical == kNoCriticalJoint ? 0U : critical + 1U, now);
+  MotionReport motion;
+  motion.state = wire_state(report_.state);
+  motion.speed_scale = report_.speed_scale;
+  motion.critical_joint = critical == kNoCriticalJoint ? 0U : critical + 1U;
+  motion.has_blocking_cell = report_.look_ahead.has_blocking_cell;
+  motion.blocking_cell = report_.look_ahead.blocking_cell;
+  link_.send_joint_state(sample, motion, now);
   watchdog_.checkpoint(CycleStep::kReport);
 
   const WatchdogFault watchdog_fault = watchdog_.end_cycle(commanded_ns);

@@ -273,8 +273,7 @@ void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) no
   }
 }
 
-void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
-                                      double speed_scale, std::uint32_t critical_joint,
+void ControllerLink::send_joint_state(const JointSample& joints, const MotionReport& motion,
                                       std::uint64_t now_ns) noexcept {
   if (!session_up_) return;
   reply_ = safecell_v1_Message_init_zero;
@@ -289,9 +288,11 @@ void ControllerLink::send_joint_state(const JointSample& joints, safecell_v1_Con
     out.velocity_rad_s[j] = joints.velocity_rad_s[j];
   }
   out.applied_map_version = store_.version();
-  out.state = state;
-  out.speed_scale = speed_scale;
-  out.critical_joint = critical_joint;
+  out.state = motion.state;
+  out.speed_scale = motion.speed_scale;
+  out.critical_joint = motion.critical_joint;
+  out.has_blocking_cell = motion.has_blocking_cell;
+  out.blocking_cell = motion.has_blocking_cell ? motion.blocking_cell : 0U;
   out.applied_map_time_ns = store_.version() != 0 ? map_applied_ns_ : 0;
   send(sealer_, joints.read_time_ns, now_ns);
 }

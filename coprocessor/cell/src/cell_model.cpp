@@ -124,7 +124,7 @@ void settle_scene(CellModel& model) {
   model.feature_grid = cell_feature_grid(cell, model.cameras);
   model.obstacles = cell_obstacles(cell);
   const int cameras = static_cast<int>(model.cameras.size());
-  model.camera_threshold = cell.camera_threshold.value_or(default_camera_threshold(cameras));
+  model.camera_threshold = cell.camera_threshold.value_or(std::min(2, std::max(1, cameras)));
   if (model.camera_threshold < 1 || (cameras > 0 && model.camera_threshold > cameras)) {
     throw_cell_error(cell.camera_threshold_at, "camera_threshold",
                      "value " + std::to_string(model.camera_threshold) +

@@ -23,6 +23,7 @@
 #include "scene_options.hpp"
 #include "service_status.hpp"
 #include "simulated_sensing.hpp"
+#include "stop_explanations.hpp"
 
 namespace safecell {
 namespace {
@@ -179,6 +180,10 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
     const std::size_t index = cycle_count++;
     const double time_s = seconds_since_start(cycle.exposure_ns);
     if (incidents) incidents->cycle(time_s, service.last_frames(), cycle, service.last_map());
+    for (IncidentExplanation& stop : report_stop_explanations(service, seconds_since_start, err,
+                                                              incidents ? &*incidents : nullptr)) {
+      run.stop_explanations.push_back(std::move(stop));
+    }
     CycleRecord cycle_record;
     cycle_record.exposure_s = time_s;
     cycle_record.sent_s = seconds_since_start(cycle.sent_ns);

@@ -82,6 +82,10 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
   summary["slowdowns"] = states.slowdowns;
   summary["faults"] = states.faults;
   summary["faults_acknowledged"] = run.acknowledged_s.size();
+  summary["stop_explanations"] = nlohmann::ordered_json::array();
+  for (const IncidentExplanation& stop : run.stop_explanations) {
+    summary["stop_explanations"].push_back({{"time_s", stop.time_s}, {"text", stop.text}});
+  }
   summary["min_human_distance_m"] = min_distance;
   summary["contacts_while_moving"] = contacts.contacts_while_moving;
   summary["contacts_with_stopped_robot"] = contacts.contacts_with_stopped_robot;
@@ -144,7 +148,13 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
       {"fusion p99", fixed(percentile(fusion_ms, 0.99), 2) + " ms"},
       {"frames / skipped",
        std::to_string(record.cycles.size()) + " / " + std::to_string(run.frames_skipped)},
+      {"slow-downs and stops explained", std::to_string(run.stop_explanations.size())},
   };
+  // The first few explanations, as the log shows them (all of them are in summary.json).
+  for (std::size_t k = 0; k < run.stop_explanations.size() && k < 5; ++k) {
+    page.figures.push_back({"why, at " + fixed(run.stop_explanations[k].time_s, 2) + " s",
+                            run.stop_explanations[k].text});
+  }
   const std::string film = run.video.write(folder, "run");
   if (!film.empty()) {
     page.film = {film,

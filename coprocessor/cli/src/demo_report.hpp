@@ -13,6 +13,7 @@
 #include "safecell/cellsets/cell_set.hpp"
 #include "safecell/closed_loop/closed_loop_record.hpp"
 #include "safecell/closed_loop/demo_world.hpp"
+#include "safecell/service/incident_folder.hpp"
 #include "safecell/validation/scene_check.hpp"
 #include "simulated_sensing.hpp"
 
@@ -44,6 +45,7 @@ struct DemoRun {
   SceneCheck checks;
   std::size_t frames_skipped = 0;
   std::vector<double> acknowledged_s;  // when the demo's operator acknowledged a fault
+  std::vector<IncidentExplanation> stop_explanations;  // why the controller slowed or stopped
   bool controller_died = false;
   std::optional<int> controller_exit;
 };

@@ -32,6 +32,10 @@ void IncidentFeed::fault(double time_s, const std::string& text) {
   recorder_.trigger(time_s, "controller fault " + text);
 }
 
+void IncidentFeed::stop_explanation(double time_s, const std::string& text) {
+  recorder_.add_stop_explanation(time_s, text);
+}
+
 std::size_t IncidentFeed::finish() {
   report(recorder_.flush());
   return recorder_.incidents_written();

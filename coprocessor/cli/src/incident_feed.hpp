@@ -24,6 +24,8 @@ class IncidentFeed {
   void cycle(double time_s, const FrameSet& frames, const ServiceCycle& cycle, const CellSet& map);
   // A fault the controller reported.
   void fault(double time_s, const std::string& text);
+  // Why the controller slowed down or stopped (the service's stop explanation).
+  void stop_explanation(double time_s, const std::string& text);
   // The end of the run: the incident being recorded is written; returns the incidents written.
   std::size_t finish();
 

@@ -32,6 +32,7 @@
 #include "scene_options.hpp"
 #include "service_setup.hpp"
 #include "service_status.hpp"
+#include "stop_explanations.hpp"
 #include "udp_address.hpp"
 
 namespace safecell {
@@ -196,6 +197,7 @@ struct RunFigures {
   std::size_t cycles_short_of_views = 0;  // fewer known views than the camera threshold
   std::size_t incidents = 0;              // folders the incident recorder wrote
   std::size_t new_sessions = 0;           // opened after the controller fell silent
+  std::size_t stops_explained = 0;        // slow-downs and stops the service explained
   std::map<std::string, std::size_t> all_forbidden_because;  // cycles per reason
   std::vector<double> features_ms;
   std::vector<double> fusion_ms;
@@ -214,6 +216,7 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
   summary["controller_faults"] = link.controller_faults().size();
   summary["incidents"] = figures.incidents;
   summary["new_sessions"] = figures.new_sessions;
+  summary["stops_explained"] = figures.stops_explained;
   summary["stopped_because"] = stopped_because;
   write_file_atomically(file, summary.dump(2) + "\n");
 }
@@ -364,6 +367,9 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
         seconds_since_start(cycle.exposure_ns != 0 ? cycle.exposure_ns : steady_now_ns());
     latency.sent(cycle.map_version, time_s);
     if (incidents) incidents->cycle(time_s, service.last_frames(), cycle, service.last_map());
+    figures.stops_explained += report_stop_explanations(service, seconds_since_start, err,
+                                                        incidents ? &*incidents : nullptr)
+                                   .size();
     for (; faults_reported < link.controller_faults().size(); ++faults_reported) {
       const v1::FaultReport& fault = link.controller_faults()[faults_reported];
       const std::string text =

@@ -76,6 +76,7 @@ struct IncidentContent {
   double trigger_s = 0.0;
   std::vector<IncidentRecorder::Cycle> cycles;
   std::vector<IncidentJointState> joints;
+  std::vector<IncidentExplanation> explanations;
 };
 
 void write_joints(const fs::path& file, const std::vector<IncidentJointState>& joints) {
@@ -101,6 +102,11 @@ void write_into(const fs::path& partial, const IncidentContent& content,
   incident["format"] = kIncidentFormat;
   incident["causes"] = content.causes;
   incident["trigger_s"] = content.trigger_s;
+  incident["stop_explanations"] = nlohmann::ordered_json::array();
+  for (const IncidentExplanation& explanation : content.explanations) {
+    incident["stop_explanations"].push_back(
+        {{"time_s", explanation.time_s}, {"text", explanation.text}});
+  }
   incident["setup"] = {{"cell_file", setup.cell_file.string()},
                        {"grid_fingerprint", fingerprint_hex(setup.grid_fingerprint)},
                        {"lut_fingerprint", fingerprint_hex(setup.lut_fingerprint)},
@@ -223,15 +229,25 @@ void IncidentRecorder::add_joint_state(IncidentJointState state) {
   forget_joints_before(time_s - settings_.keep_s);
 }
 
-void IncidentRecorder::forget_cycles_before(double time_s) {
+void IncidentRecorder::add_stop_explanation(double time_s, std::string text) {
+  explanations_.push_back({time_s, std::move(text)});
+  const double from = keep_from(time_s - settings_.keep_s);
+  while (!explanations_.empty() && explanations_.front().time_s < from) explanations_.pop_front();
+}
+
+double IncidentRecorder::keep_from(double time_s) const {
   // While an incident is being recorded, everything from keep_s before its trigger stays.
-  const double keep_from = trigger_s_ ? std::min(time_s, *trigger_s_ - settings_.keep_s) : time_s;
-  while (!cycles_.empty() && cycles_.front().cycle.exposure_s < keep_from) cycles_.pop_front();
+  return trigger_s_ ? std::min(time_s, *trigger_s_ - settings_.keep_s) : time_s;
+}
+
+void IncidentRecorder::forget_cycles_before(double time_s) {
+  const double from = keep_from(time_s);
+  while (!cycles_.empty() && cycles_.front().cycle.exposure_s < from) cycles_.pop_front();
 }
 
 void IncidentRecorder::forget_joints_before(double time_s) {
-  const double keep_from = trigger_s_ ? std::min(time_s, *trigger_s_ - settings_.keep_s) : time_s;
-  while (!joints_.empty() && joints_.front().time_s < keep_from) joints_.pop_front();
+  const double from = keep_from(time_s);
+  while (!joints_.empty() && joints_.front().time_s < from) joints_.pop_front();
 }
 
 void IncidentRecorder::trigger(double time_s, const std::string& cause) {
@@ -274,12 +290,14 @@ void IncidentRecorder::hand_over() {
                             " incidents are still being written"});
   } else {
     // The writer's own copy: the images are shared, never written again by the recorder.
-    IncidentContent content{settings_.folder,
-                            name,
-                            causes_,
-                            *trigger_s_,
-                            std::vector<Cycle>(cycles_.begin(), cycles_.end()),
-                            std::vector<IncidentJointState>(joints_.begin(), joints_.end())};
+    IncidentContent content{
+        settings_.folder,
+        name,
+        causes_,
+        *trigger_s_,
+        std::vector<Cycle>(cycles_.begin(), cycles_.end()),
+        std::vector<IncidentJointState>(joints_.begin(), joints_.end()),
+        std::vector<IncidentExplanation>(explanations_.begin(), explanations_.end())};
     writes_.push_back(
         std::async(std::launch::async, [content = std::move(content), setup = &settings_.setup] {
           return write_incident(content, *setup);

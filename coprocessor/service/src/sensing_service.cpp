@@ -40,7 +40,39 @@ SensingService::SensingService(const CspaceGrid& grid, SensingPipeline& pipeline
     if (position.size() != joints_.joint_count() || velocity.size() != position.size()) return;
     (void)joints_.add(received.coprocessor_time_ns, offset ? offset->uncertainty_ns : 0, position,
                       velocity);
+    explain_stop(received);
   });
+}
+
+void SensingService::explain_stop(const ReceivedJointState& received) {
+  const v1::JointState& state = received.state;
+  const bool halting =
+      state.state() == v1::CONTROLLER_STATE_SLOWED || state.state() == v1::CONTROLLER_STATE_STOPPED;
+  const bool begins = halting && !halting_;
+  halting_ = halting;
+  if (!halting || !state.has_blocking_cell() || state.blocking_cell() >= grid_.cell_count()) return;
+  const CellIndex cell = state.blocking_cell();
+  const std::uint64_t version = state.applied_map_version();
+  // Explaining reads every obstacle pixel's LUT-2 entry (about a millisecond): once per cell
+  // while the robot is held by it, at most once per map.
+  if (!begins && (cell == explained_cell_ || version == explained_version_)) return;
+  explained_cell_ = cell;
+  explained_version_ = version;
+  StopExplanation stop;
+  stop.coprocessor_time_ns = received.coprocessor_time_ns;
+  stop.stopped = state.state() == v1::CONTROLLER_STATE_STOPPED;
+  stop.critical_joint = state.critical_joint();
+  stop.begins = begins;
+  stop.explanation = explain_cell(pipeline_.fusion(), views_history_.find(version), cell);
+  stop.text = describe(stop.explanation, pipeline_.fusion());
+  if (explanations_.size() >= kMaxPendingExplanations) explanations_.erase(explanations_.begin());
+  explanations_.push_back(std::move(stop));
+}
+
+std::vector<StopExplanation> SensingService::take_stop_explanations() {
+  std::vector<StopExplanation> taken;
+  taken.swap(explanations_);
+  return taken;
 }
 
 const ServiceCycle& SensingService::process(const FrameSet& delivered) {
@@ -78,6 +110,11 @@ const ServiceCycle& SensingService::process(const FrameSet& delivered) {
                      cycle.known_views, static_cast<std::uint32_t>(frames.frames.size()));
   cycle.sent_ns = steady_now_ns();
   cycle.map_version = update.version;
+  if (cycle.all_forbidden.empty()) {
+    views_history_.record(update.version, pipeline_.fusion(), pipeline_.observations());
+  } else {
+    views_history_.record_all_forbidden(update.version, cycle.all_forbidden);
+  }
   cycle.map_frames = update.chunks.size();
   cycle_ = std::move(cycle);
   return cycle_;

@@ -72,6 +72,15 @@ const char* to_string(LinkBlock block) noexcept;
 // The cause of a stop request by name ("operator", "cameras", "watchdog"; "other"). Never null.
 const char* fault_cause_name(safecell_v1_FaultCause cause) noexcept;
 
+// What the cycle commanded, for the joint state.
+struct MotionReport {
+  safecell_v1_ControllerState state = safecell_v1_ControllerState_CONTROLLER_STATE_UNSPECIFIED;
+  double speed_scale = 0.0;          // 0..1
+  std::uint32_t critical_joint = 0;  // the joint deciding a slow-down or stop, from 1 (0: none)
+  bool has_blocking_cell = false;    // the forbidden cell in its way, when there is one
+  CellIndex blocking_cell = 0;
+};
+
 class ControllerLink {
  public:
   static constexpr int kMaxFramesPerPoll = 64;
@@ -85,10 +94,9 @@ class ControllerLink {
   // more may wait.
   bool poll(std::uint64_t now_ns) noexcept;
 
-  // Sends this cycle's joint state; it carries the held map's version as the acknowledgement.
-  // critical_joint: the joint deciding a slow-down or stop, counted from 1 (0: none).
-  void send_joint_state(const JointSample& joints, safecell_v1_ControllerState state,
-                        double speed_scale, std::uint32_t critical_joint,
+  // Sends this cycle's joint state and what the cycle did with it; it carries the held map's
+  // version as the acknowledgement.
+  void send_joint_state(const JointSample& joints, const MotionReport& motion,
                         std::uint64_t now_ns) noexcept;
 
   LinkBlock block(std::uint64_t now_ns) const noexcept;

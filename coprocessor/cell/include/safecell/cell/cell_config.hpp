@@ -139,7 +139,8 @@ struct CellConfig {
   FeatureGridConfig feature_grid;
   BlockedCellConfig blocked_cells;
   // A configuration is critical when at least this many cameras see it blocked (paper §4.4).
-  // Unset: default_camera_threshold(cameras) (cell_model.hpp).
+  // Unset: 2, or 1 with a single camera. 3 of 4 cameras misses a person whom the arm hides from
+  // two of them (docs/validation.md, "The camera threshold").
   std::optional<int> camera_threshold;
   SourceLine camera_threshold_at;
   // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`

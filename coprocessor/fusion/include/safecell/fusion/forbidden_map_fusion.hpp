@@ -126,6 +126,7 @@ class ForbiddenMapFusion {
   [[nodiscard]] const CellSet& observable(std::size_t camera) const {
     return observable_any_part_.at(camera);
   }
+  [[nodiscard]] const LutSet& luts() const { return luts_; }
   [[nodiscard]] std::size_t camera_count() const { return luts_.cameras.size(); }
   [[nodiscard]] std::size_t part_count() const { return luts_.parts.size(); }
   [[nodiscard]] const std::vector<RobotPart>& parts() const { return luts_.parts; }

@@ -64,6 +64,12 @@ struct IncidentJointState {
   std::vector<double> velocity;  // rad/s, empty when not reported
 };
 
+// Why the controller slowed down or stopped (the service's stop explanation).
+struct IncidentExplanation {
+  double time_s = 0.0;
+  std::string text;
+};
+
 struct Incident {
   std::vector<std::string> causes;
   double trigger_s = 0.0;

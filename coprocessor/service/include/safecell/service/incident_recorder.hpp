@@ -50,6 +50,9 @@ class IncidentRecorder {
   void add_cycle(double exposure_s, const FrameSet& frames, const ServiceCycle& cycle,
                  const CellSet& map);
   void add_joint_state(IncidentJointState state);
+  // Why the controller slowed down or stopped at `time_s` (the service's stop explanation),
+  // kept as the joint stream is; written into incident.json as "stop_explanations".
+  void add_stop_explanation(double time_s, std::string text);
 
   // An incident begins at `time_s` with `cause`, unless one is being recorded (it then covers
   // this one too; the cause is added to its list).
@@ -82,6 +85,9 @@ class IncidentRecorder {
   // Each stream by its own times (the joint stream runs ahead of the frames' exposures).
   void forget_cycles_before(double time_s);
   void forget_joints_before(double time_s);
+  // Where keeping of the stream that runs up to `time_s` starts (keep_s before it, or before the
+  // trigger of the incident being recorded).
+  [[nodiscard]] double keep_from(double time_s) const;
   // Hands the incident to a writer, or drops it with an outcome saying why.
   void hand_over();
   std::vector<IncidentOutcome> collect(bool wait);
@@ -89,6 +95,7 @@ class IncidentRecorder {
   IncidentSettings settings_;
   std::deque<Cycle> cycles_;
   std::deque<IncidentJointState> joints_;
+  std::deque<IncidentExplanation> explanations_;
   std::optional<double> trigger_s_;
   std::vector<std::string> causes_;
   std::size_t handed_over_ = 0;

@@ -8,6 +8,12 @@
 // all-forbidden map and names why: the controller then stops the robot. A frame set with fewer
 // known views than the camera threshold is sent as it is, with its healthy-camera count, and the
 // controller stops on that.
+//
+// Stop explanations: when the controller's joint stream says it slows down or stops for a
+// forbidden cell in its way (has_blocking_cell), the service explains that cell with the views of
+// the map the controller held (cell_explanation.hpp): which robot part, cameras and feature cells
+// made it critical, or that it was static or the whole map was forbidden. One explanation when a
+// slow-down or stop begins and whenever its blocking cell changes, at most one per map version.
 // Thread context: one thread (the service's); not synchronised.
 
 #include <chrono>
@@ -17,6 +23,7 @@
 
 #include "safecell/acquisition/camera_views.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
+#include "safecell/explain/cell_explanation.hpp"
 #include "safecell/link/coprocessor_link.hpp"
 #include "safecell/link/joint_buffer.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
@@ -46,6 +53,16 @@ struct ServiceCycle {
   CycleTimes times;
 };
 
+// Why the controller slowed down or stopped, explained.
+struct StopExplanation {
+  std::uint64_t coprocessor_time_ns = 0;  // when the joint state that asked for it arrived
+  bool stopped = false;                   // stopped, else slowed down
+  std::uint32_t critical_joint = 0;       // counted from 1 (0: none)
+  bool begins = false;                    // the slow-down or stop began with this joint state
+  CellExplanation explanation;
+  std::string text;  // describe(explanation)
+};
+
 class SensingService {
  public:
   // Keeps references to grid, pipeline and link. Registers itself for the link's joint states.
@@ -69,6 +86,10 @@ class SensingService {
   // The last frame set as the pipeline saw it: each camera's view after its health check (for
   // incidents and pictures).
   [[nodiscard]] const FrameSet& last_frames() const { return frames_; }
+  // The stop explanations made since the last call (at most kMaxPendingExplanations, the newest).
+  std::vector<StopExplanation> take_stop_explanations();
+
+  static constexpr std::size_t kMaxPendingExplanations = 64;
 
  private:
   const CspaceGrid& grid_;
@@ -81,6 +102,14 @@ class SensingService {
   CellSet all_forbidden_;
   const CellSet* last_map_;
   ServiceCycle cycle_;
+  FusedViewsHistory views_history_;
+  std::vector<StopExplanation> explanations_;
+  // The last joint state's: slowed or stopped, and the blocking cell and map last explained.
+  bool halting_ = false;
+  CellIndex explained_cell_ = 0;
+  std::uint64_t explained_version_ = 0;
+
+  void explain_stop(const ReceivedJointState& received);
 };
 
 // Seconds of the steady clock as its nanoseconds (exposure stamps to the link's clock).
