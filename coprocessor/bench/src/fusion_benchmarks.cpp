@@ -11,6 +11,7 @@
 
 #include "default_cell_tables.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
+#include "safecell/explain/cell_explanation.hpp"
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
@@ -95,10 +96,12 @@ void report(benchmark::State& state, const FusionSetUp& fusion, const ForbiddenM
   state.counters["lut_bytes_per_camera"] = bytes / static_cast<double>(fusion.luts.cameras.size());
 }
 
-void fuse(benchmark::State& state, const std::vector<CameraObservation>& observations) {
+void fuse(benchmark::State& state, const std::vector<CameraObservation>& observations,
+          bool hidden_votes = false) {
   const FusionSetUp& fusion = set_up();
-  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes,
-                            FusionSettings{fusion.cell.camera_threshold});
+  FusionSettings settings{fusion.cell.camera_threshold};
+  settings.hidden_votes = hidden_votes;
+  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes, settings);
   while (state.KeepRunning()) {
     benchmark::DoNotOptimize(&engine.fuse(observations, fusion.robot_cell));
     benchmark::ClobberMemory();
@@ -110,6 +113,34 @@ void fusion_typical_scene(benchmark::State& state) { fuse(state, set_up().typica
 
 void fusion_thirty_percent_blocked(benchmark::State& state) {
   fuse(state, set_up().thirty_percent);
+}
+
+void fusion_typical_scene_hidden_votes(benchmark::State& state) {
+  fuse(state, set_up().typical, true);
+}
+
+// Why a critical cell of the typical scene is critical (what the service does when the controller
+// reports a slow-down or stop for it): every obstacle pixel's LUT-2 entry of every part, read.
+void stop_explanation_typical_scene(benchmark::State& state) {
+  const FusionSetUp& fusion = set_up();
+  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes,
+                            FusionSettings{fusion.cell.camera_threshold});
+  engine.fuse(fusion.typical, fusion.robot_cell);
+  FusedViewsHistory history(1);
+  history.record(1, engine, fusion.typical);
+  const CellIndex cell = engine.critical().next_set(0);
+  if (cell >= engine.critical().cell_count()) {
+    state.SkipWithError("the typical scene has no critical cell");
+    return;
+  }
+  std::size_t voting_cameras = 0;
+  while (state.KeepRunning()) {
+    const CellExplanation explanation = explain_cell(engine, history.find(1), cell);
+    voting_cameras = 0;
+    for (const PartVote& vote : explanation.parts) voting_cameras += vote.cameras.size();
+    benchmark::DoNotOptimize(voting_cameras);
+  }
+  state.counters["voting_cameras"] = static_cast<double>(voting_cameras);
 }
 
 void fusion_baseline_typical_scene(benchmark::State& state) {
@@ -144,6 +175,10 @@ void register_fusion_benchmarks() {
   register_benchmark("fusion_thirty_percent_blocked", fusion_thirty_percent_blocked,
                      benchmark::kMicrosecond);
   register_benchmark("fusion_baseline_typical_scene", fusion_baseline_typical_scene,
+                     benchmark::kMicrosecond);
+  register_benchmark("fusion_typical_scene_hidden_votes", fusion_typical_scene_hidden_votes,
+                     benchmark::kMicrosecond);
+  register_benchmark("stop_explanation_typical_scene", stop_explanation_typical_scene,
                      benchmark::kMicrosecond);
   register_benchmark("robot_silhouettes_of_one_cell", robot_silhouettes_of_one_cell,
                      benchmark::kMicrosecond);

@@ -33,6 +33,8 @@ constexpr NamedFigure kNamedFigures[] = {
     {"fusion_thirty_percent_blocked", "fusion_thirty_percent_ms", "fusion_worst_ms"},
     {"fusion_baseline_typical_scene", "fusion_baseline_ms", "fusion_baseline_worst_ms"},
     {"robot_silhouettes_of_one_cell", "lut1_model_ms", "lut1_model_worst_ms"},
+    {"fusion_typical_scene_hidden_votes", "fusion_hidden_votes_ms", "fusion_hidden_votes_worst_ms"},
+    {"stop_explanation_typical_scene", "stop_explanation_ms", "stop_explanation_worst_ms"},
 };
 
 // Counters of a benchmark that become top-level figures.

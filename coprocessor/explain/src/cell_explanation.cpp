@@ -18,15 +18,10 @@ bool entry_holds(const PixelToCellsTable& table, std::size_t pixel, CellIndex ce
 std::vector<FeatureCell> cells_marking(const PixelToCellsTable& table, const FeatureMask& pixels,
                                        CellIndex cell) {
   std::vector<FeatureCell> marking;
-  for (int row = 0; row < pixels.rows(); ++row) {
-    for (int column = 0; column < pixels.columns(); ++column) {
-      if (!pixels.test(column, row)) continue;
-      const std::size_t pixel =
-          static_cast<std::size_t>(row) * static_cast<std::size_t>(pixels.columns()) +
-          static_cast<std::size_t>(column);
-      if (entry_holds(table, pixel, cell)) marking.push_back(FeatureCell{column, row});
-    }
-  }
+  pixels.for_each_set([&](int column, int row) {
+    const auto pixel = static_cast<std::size_t>(row * pixels.columns() + column);
+    if (entry_holds(table, pixel, cell)) marking.push_back(FeatureCell{column, row});
+  });
   return marking;
 }
 

@@ -49,27 +49,22 @@ void BaselineFusion::count_cell(CellIndex cell, std::uint8_t camera_stamp) {
 
 void BaselineFusion::count_pixels(const FeatureMask& pixels, const PixelToCellsTable& table,
                                   std::uint8_t camera_stamp, bool seen) {
-  for (int row = 0; row < pixels.rows(); ++row) {
-    for (int column = 0; column < pixels.columns(); ++column) {
-      if (!pixels.test(column, row)) continue;
-      const std::size_t pixel =
-          static_cast<std::size_t>(row) * static_cast<std::size_t>(pixels.columns()) +
-          static_cast<std::size_t>(column);
-      // The pixel's cells each once, as the paper's list holds them: its runs may overlap, so
-      // they are gathered first.
-      pixel_cells_.clear();
-      table.add_cells(pixel, pixel_cells_);
-      if (seen) seen_ |= pixel_cells_;
-      const std::vector<std::uint64_t>& words = pixel_cells_.words();
-      for (std::size_t word = 0; word < words.size(); ++word) {
-        for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
-          count_cell(
-              static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits))),
-              camera_stamp);
-        }
+  pixels.for_each_set([&](int column, int row) {
+    const auto pixel = static_cast<std::size_t>(row * pixels.columns() + column);
+    // The pixel's cells each once, as the paper's list holds them: its runs may overlap, so they
+    // are gathered first.
+    pixel_cells_.clear();
+    table.add_cells(pixel, pixel_cells_);
+    if (seen) seen_ |= pixel_cells_;
+    const std::vector<std::uint64_t>& words = pixel_cells_.words();
+    for (std::size_t word = 0; word < words.size(); ++word) {
+      for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+        count_cell(
+            static_cast<CellIndex>(word * 64 + static_cast<std::size_t>(std::countr_zero(bits))),
+            camera_stamp);
       }
     }
-  }
+  });
 }
 
 const CellSet& BaselineFusion::fuse(const std::vector<CameraObservation>& observations,

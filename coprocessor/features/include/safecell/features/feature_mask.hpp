@@ -59,6 +59,9 @@ class FeatureMask {
   // of the blocks it was given.
   template <typename Visit>
   bool for_each_full_block(int size, Visit visit) const;
+  // Calls visit(column, row) for every set cell, row by row (a word scan, not a test per cell).
+  template <typename Visit>
+  void for_each_set(Visit visit) const;
   void clear();
 
   [[nodiscard]] std::size_t count() const;
@@ -101,6 +104,18 @@ class FeatureMask {
   int words_per_row_ = 0;
   std::vector<std::uint64_t> words_;
 };
+
+template <typename Visit>
+void FeatureMask::for_each_set(Visit visit) const {
+  for (int row = 0; row < rows_; ++row) {
+    const std::uint64_t* words = row_words(row);
+    for (int word = 0; word < words_per_row_; ++word) {
+      for (std::uint64_t bits = words[word]; bits != 0; bits &= bits - 1) {
+        visit(word * 64 + std::countr_zero(bits), row);
+      }
+    }
+  }
+}
 
 template <typename Visit>
 bool FeatureMask::for_each_full_block(int size, Visit visit) const {
