@@ -97,8 +97,7 @@ TEST(ClosedLoopValidate, AbsurdSettingsAreRefused) {
        {std::vector<std::string>{"validate", "--closed-loop", "--scenarios", "0"},
         std::vector<std::string>{"validate", "--closed-loop", "--latency", "40"},
         std::vector<std::string>{"validate", "--closed-loop", "--fps", "1000"},
-        std::vector<std::string>{"validate", "--closed-loop", "--negative-control",
-                                 "empty-masks"},
+        std::vector<std::string>{"validate", "--closed-loop", "--negative-control", "empty-masks"},
         // An option of the other validation would be ignored: it is refused instead.
         std::vector<std::string>{"validate", "--closed-loop", "--robot-parts", "per-link"},
         std::vector<std::string>{"validate", "--closed-loop", "--scenes", "3"},
