@@ -19,7 +19,9 @@ std::vector<FeatureCell> cells_marking(const PixelToCellsTable& table, const Fea
                                        CellIndex cell) {
   std::vector<FeatureCell> marking;
   pixels.for_each_set([&](int column, int row) {
-    const auto pixel = static_cast<std::size_t>(row * pixels.columns() + column);
+    const std::size_t pixel =
+        static_cast<std::size_t>(row) * static_cast<std::size_t>(pixels.columns()) +
+        static_cast<std::size_t>(column);
     if (entry_holds(table, pixel, cell)) marking.push_back(FeatureCell{column, row});
   });
   return marking;

@@ -50,7 +50,9 @@ void BaselineFusion::count_cell(CellIndex cell, std::uint8_t camera_stamp) {
 void BaselineFusion::count_pixels(const FeatureMask& pixels, const PixelToCellsTable& table,
                                   std::uint8_t camera_stamp, bool seen) {
   pixels.for_each_set([&](int column, int row) {
-    const auto pixel = static_cast<std::size_t>(row * pixels.columns() + column);
+    const std::size_t pixel =
+        static_cast<std::size_t>(row) * static_cast<std::size_t>(pixels.columns()) +
+        static_cast<std::size_t>(column);
     // The pixel's cells each once, as the paper's list holds them: its runs may overlap, so they
     // are gathered first.
     pixel_cells_.clear();
