@@ -9,6 +9,7 @@
 #include "cell_errors.hpp"
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/cell/entry_zones.hpp"
 
 namespace safecell {
 namespace {
@@ -115,6 +116,30 @@ TEST(CellFile, EntriesAndTheirSeparation) {
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {speed: 1}\n"),
             "bad.yaml:11: entry_separation.speed: unknown field (expected one of: "
             "approach_speed_m_s, response_s, stopping_s, intrusion_m)");
+}
+
+TEST(CellFile, TheProtectiveSeparationIsOnUnlessTheCellTurnsItOff) {
+  const CellConfig unset = parse_cell_yaml(kTwoJoints, "two.yaml");
+  ASSERT_TRUE(unset.protective_separation.has_value());
+  EXPECT_EQ(unset.protective_separation->intrusion_m, 0.0);
+  EXPECT_NEAR(separation_distance_m(*unset.protective_separation), 1.6 * (0.1 + 0.3), 1e-12);
+  ASSERT_TRUE(default_cell().protective_separation.has_value());
+  EXPECT_FALSE(parse_cell_yaml(std::string(kTwoJoints) + "protective_separation: off\n", "two.yaml")
+                   .protective_separation.has_value());
+  const CellConfig slow = parse_cell_yaml(
+      std::string(kTwoJoints) + "protective_separation: {stopping_s: 0.2}\n", "two.yaml");
+  ASSERT_TRUE(slow.protective_separation.has_value());
+  EXPECT_EQ(slow.protective_separation->stopping_s, 0.2);
+  EXPECT_EQ(slow.protective_separation->intrusion_m, 0.0);
+
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: on\n"),
+            "bad.yaml:11: protective_separation: value 'on', expected off or a mapping of "
+            "approach_speed_m_s, response_s, stopping_s, intrusion_m");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: {stopping_s: 0.5}\n"),
+            "bad.yaml:11: protective_separation: a separation distance of 0.96 m, expected at "
+            "most 0.95 m (the robot would stop for anyone in most of the cell)");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: {response_s: 0}\n"),
+            "bad.yaml:11: protective_separation.response_s: value 0, expected 0.01 .. 2 s");
 }
 
 TEST(CellFile, CameraSources) {

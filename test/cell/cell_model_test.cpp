@@ -12,6 +12,7 @@
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/cell/entry_zones.hpp"
 
 namespace safecell {
 namespace {
@@ -80,7 +81,9 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   EXPECT_EQ(model.feature_grid.cell_width_px(), 11);
   EXPECT_EQ(model.feature_grid.cell_height_px(), 9);
   ASSERT_EQ(model.obstacles.size(), 1u);
-  EXPECT_EQ(model.camera_threshold, 2);
+  EXPECT_EQ(model.camera_threshold, 3);
+  ASSERT_TRUE(model.config.protective_separation.has_value());
+  EXPECT_NEAR(separation_distance_m(*model.config.protective_separation), 0.64, 1e-12);
   EXPECT_EQ(model.feature_weights.average, 2);
   EXPECT_EQ(model.blocked_threshold, 24);
 }

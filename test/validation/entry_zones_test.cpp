@@ -29,7 +29,7 @@ PlacedShape opening_of(const CellConfig& cell, const EntryConfig& entry) {
 }
 
 TEST(EntryZones, SeparationDistanceIsIso13855s) {
-  EntrySeparationConfig separation;
+  SeparationDistanceConfig separation;
   EXPECT_NEAR(separation_distance_m(separation), 1.6 * (0.1 + 0.3) + 0.2, 1e-12);
   separation.approach_speed_m_s = 2.0;
   separation.intrusion_m = 0.0;

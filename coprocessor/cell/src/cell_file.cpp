@@ -10,6 +10,7 @@
 
 #include "safecell/cell/cell_error.hpp"
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/cell/entry_zones.hpp"
 #include "yaml_field.hpp"
 
 namespace safecell {
@@ -202,10 +203,11 @@ EntryConfig entry_of(const Field& field, const std::array<double, 3>& size_m) {
   return entry;
 }
 
-EntrySeparationConfig entry_separation_of(const Field& field) {
+// `defaults`: what a field left out keeps.
+SeparationDistanceConfig separation_distance_of(const Field& field,
+                                                SeparationDistanceConfig separation) {
   require_mapping(field);
   refuse_unknown_keys(field, {"approach_speed_m_s", "response_s", "stopping_s", "intrusion_m"});
-  EntrySeparationConfig separation;
   separation.at = field.at;
   // Each field is optional: absent, it keeps its default.
   const auto read = [&field](const char* key, double& value, double lo, double hi,
@@ -323,9 +325,9 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
   if (!root.IsMap()) {
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
-  refuse_unknown_keys(
-      top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles", "feature_grid",
-            "blocked_cells", "camera_threshold", "blind_spots", "entries", "entry_separation"});
+  refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
+                            "feature_grid", "blocked_cells", "camera_threshold", "blind_spots",
+                            "entries", "entry_separation", "protective_separation"});
 
   CellConfig cell;
   cell.source = source;
@@ -408,7 +410,35 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     }
   }
   if (root["entry_separation"]) {
-    cell.entry_separation = entry_separation_of(require(top, "entry_separation"));
+    cell.entry_separation =
+        separation_distance_of(require(top, "entry_separation"), SeparationDistanceConfig{});
+  }
+  // Unset: on, with the defaults; `off`: not checked.
+  cell.protective_separation = default_protective_separation();
+  if (root["protective_separation"]) {
+    const Field separation = require(top, "protective_separation");
+    cell.protective_separation_at = separation.at;
+    if (separation.node.IsScalar()) {
+      if (text_of(separation) != "off") {
+        throw_cell_error(separation.at, "protective_separation",
+                         "value '" + separation.node.Scalar() +
+                             "', expected off or a mapping of approach_speed_m_s, response_s, "
+                             "stopping_s, intrusion_m");
+      }
+      cell.protective_separation.reset();
+    } else {
+      cell.protective_separation =
+          separation_distance_of(separation, default_protective_separation());
+      const double s = separation_distance_m(*cell.protective_separation);
+      if (s > kMaxProtectiveSeparation_m) {
+        std::ostringstream value;
+        value << s;
+        throw_cell_error(separation.at, "protective_separation",
+                         "a separation distance of " + value.str() +
+                             " m, expected at most 0.95 m (the robot would stop for anyone in "
+                             "most of the cell)");
+      }
+    }
   }
   return cell;
 }

@@ -16,7 +16,7 @@ double outward_sign(const EntryConfig& entry) {
 
 }  // namespace
 
-double separation_distance_m(const EntrySeparationConfig& separation) {
+double separation_distance_m(const SeparationDistanceConfig& separation) {
   return separation.approach_speed_m_s * (separation.response_s + separation.stopping_s) +
          separation.intrusion_m;
 }

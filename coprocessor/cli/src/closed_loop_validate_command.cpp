@@ -159,7 +159,8 @@ void print_text(const ClosedLoopValidateOptions& options, const std::vector<Scen
   out << "closed-loop validation: " << all.scenarios << " scenarios (seed " << options.seed
       << ", from " << options.first << "), " << fixed(options.fps, 0) << " frames/s, latency "
       << fixed(options.latency_ms, 1) << " ms"
-      << (options.look_ahead_off ? ", NEGATIVE CONTROL: look-ahead off" : "") << "\n\n";
+      << (options.look_ahead_off ? ", NEGATIVE CONTROL: look-ahead off" : "")
+      << (options.separation_off ? ", NEGATIVE CONTROL: protective separation off" : "") << "\n\n";
   TextTable table({{"person, robot", TextTable::Align::kLeft},
                    {"scenarios", TextTable::Align::kRight},
                    {"contacts while moving", TextTable::Align::kRight},
@@ -210,7 +211,7 @@ int run_closed_loop_validate(const ClosedLoopValidateOptions& options, std::ostr
   check_options(options);
   const fs::path program = find_controller_program(options.controller_program);
   SimulatedSensing sensing(options.cell_path, options.lut_cache, options.seed, err,
-                           options.camera_threshold);
+                           CellOverrides{options.camera_threshold, options.separation_off});
   const fs::path out_dir(options.out_dir);
   fs::create_directories(out_dir);
   LockstepParts parts{sensing.cell,
@@ -271,7 +272,9 @@ int run_closed_loop_validate(const ClosedLoopValidateOptions& options, std::ostr
   report["first"] = options.first;
   report["fps"] = options.fps;
   report["latency_ms"] = options.latency_ms;
-  report["negative_control"] = options.look_ahead_off ? "look-ahead-off" : "none";
+  report["negative_control"] = options.look_ahead_off   ? "look-ahead-off"
+                               : options.separation_off ? "separation-off"
+                                                        : "none";
   report["totals"] = totals_json(all);
   for (const auto& [kind, totals] : by_kind) report["by_kind"][kind] = totals_json(totals);
   for (const ScenarioRow& row : rows) report["per_scenario"].push_back(row_json(row));

@@ -172,8 +172,6 @@ class StopRequestOnError {
 
 // What the summary counts an all-forbidden cycle under: its reason without the figures after the
 // colon ("robot pose unknown: uncertain by 23.4 mm" -> "robot pose unknown").
-std::string reason_kind(const std::string& reason) { return reason.substr(0, reason.find(':')); }
-
 // Every camera has stopped delivering (the recordings have ended, the devices are gone).
 std::optional<std::string> all_cameras_stopped(const FrameSet& set) {
   for (const CameraFrame& frame : set.frames) {
@@ -357,7 +355,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     ++figures.cycles;
     if (!cycle.all_forbidden.empty()) {
       ++figures.all_forbidden_cycles;
-      ++figures.all_forbidden_because[reason_kind(cycle.all_forbidden)];
+      ++figures.all_forbidden_because[all_forbidden_kind(cycle.all_forbidden)];
     }
     if (cycle.known_views < service_settings.camera_threshold) ++figures.cycles_short_of_views;
     figures.features_ms.push_back(cycle.times.features_ms);

@@ -21,9 +21,10 @@ SimulatedReference reference_images(SimulatedCell& sim, const CellModel& cell, s
   return simulated_reference(sim, cell, kReferenceFrames, seed);
 }
 
-CellModel cell_with_threshold(const std::string& cell_path, int camera_threshold) {
+CellModel cell_with(const std::string& cell_path, const CellOverrides& overrides) {
   CellConfig config = load_cell_file_or_default(cell_path);
-  if (camera_threshold > 0) config.camera_threshold = camera_threshold;
+  if (overrides.camera_threshold > 0) config.camera_threshold = overrides.camera_threshold;
+  if (overrides.protective_separation_off) config.protective_separation.reset();
   return load_cell_model(std::move(config));
 }
 
@@ -36,8 +37,8 @@ FusionSettings fusion_settings(const CellModel& cell) {
 }  // namespace
 
 SimulatedSensing::SimulatedSensing(const std::string& cell_path, const std::string& lut_cache,
-                                   std::uint64_t seed, std::ostream& log, int camera_threshold)
-    : cell(cell_with_threshold(cell_path, camera_threshold)),
+                                   std::uint64_t seed, std::ostream& log, CellOverrides overrides)
+    : cell(cell_with(cell_path, overrides)),
       grid(make_grid(cell.config)),
       luts(cell_luts(cell, grid, ModelLutOptions{}, lut_cache, log)),
       silhouettes(cell, grid, ModelLutOptions{}),

@@ -17,11 +17,17 @@
 
 namespace safecell {
 
+// What a validation run changes of the cell file.
+struct CellOverrides {
+  int camera_threshold = 0;                // 0: the cell's
+  bool protective_separation_off = false;  // the cell's protective separation turned off
+};
+
 struct SimulatedSensing {
-  // cell_path: empty for the built-in default cell; lut_cache: empty for the default folder;
-  // camera_threshold: 0 for the cell's. Messages (table building, reference images) go to `log`.
+  // cell_path: empty for the built-in default cell; lut_cache: empty for the default folder.
+  // Messages (table building, reference images) go to `log`.
   SimulatedSensing(const std::string& cell_path, const std::string& lut_cache, std::uint64_t seed,
-                   std::ostream& log, int camera_threshold = 0);
+                   std::ostream& log, CellOverrides overrides = {});
   SimulatedSensing(const SimulatedSensing&) = delete;
   SimulatedSensing& operator=(const SimulatedSensing&) = delete;
 

@@ -354,7 +354,8 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
   validate_command
       ->add_option("--negative-control", validate->negative_control,
                    "Break the pipeline on purpose to show the check fails: none, empty-masks, "
-                   "dropped-strip or envelope-removal; with --closed-loop: look-ahead-off")
+                   "dropped-strip or envelope-removal; with --closed-loop: look-ahead-off or "
+                   "separation-off (the cell's protective separation off)")
       ->capture_default_str();
   validate_command
       ->add_option("--shard", validate->shard,
@@ -421,11 +422,13 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
       loop->seed = validate->seed;
       loop->json = validate->json;
       loop->look_ahead_off = validate->negative_control == "look-ahead-off";
+      loop->separation_off = validate->negative_control == "separation-off";
       line.action = [=, &line] {
         refuse_options_of_the_other_loop(*validate_command, true);
-        if (!loop->look_ahead_off && validate->negative_control != "none") {
+        if (!loop->look_ahead_off && !loop->separation_off &&
+            validate->negative_control != "none") {
           bad_option("--negative-control", validate->negative_control,
-                     "none or look-ahead-off with --closed-loop");
+                     "none, look-ahead-off or separation-off with --closed-loop");
         }
         line.exit_code = run_closed_loop_validate(*loop, line.out, line.err);
       };

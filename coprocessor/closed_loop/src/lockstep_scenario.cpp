@@ -154,7 +154,7 @@ ScenarioResult run_lockstep_scenario(LockstepParts& parts, const LockstepSetting
     ++result.frames;
     if (!cycle.all_forbidden.empty()) {
       ++result.all_forbidden_frames;
-      ++result.all_forbidden_because[cycle.all_forbidden];
+      ++result.all_forbidden_because[all_forbidden_kind(cycle.all_forbidden)];
     }
   }
   result.simulated_s = seconds(sim_now_ns);

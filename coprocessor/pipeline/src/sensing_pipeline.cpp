@@ -5,6 +5,7 @@
 #include <string>
 
 #include "safecell/acquisition/exposure_sync.hpp"
+#include "safecell/cell/entry_zones.hpp"
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/silhouettes/model_silhouettes.hpp"
 
@@ -23,6 +24,20 @@ std::optional<ConfigurationSilhouettes> silhouettes_at_configuration(
                                                  ModelLutOptions{}.ball_radius_m, *widening);
 }
 
+// The protective separation check the cell file asks for; none when it turns it off, the cell
+// has no robot model or the robot's motion within the sync error is unbounded.
+std::optional<ProtectiveSeparation> separation_check(const CellModel& cell, const CspaceGrid& grid,
+                                                     const LutSet& luts,
+                                                     const FusionSettings& settings) {
+  if (!cell.config.protective_separation || !cell.robot) return std::nullopt;
+  const auto widening =
+      removal_widening_m(*cell.robot, grid, settings.padding_m, settings.sync_error_s);
+  if (!widening) return std::nullopt;
+  return std::optional<ProtectiveSeparation>(
+      std::in_place, cell, luts.parts, ModelLutOptions{}.ball_radius_m, *widening,
+      separation_distance_m(*cell.config.protective_separation), settings.camera_threshold);
+}
+
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
@@ -38,6 +53,7 @@ SensingPipeline::SensingPipeline(const CellModel& cell, const CspaceGrid& grid, 
       grid_(grid),
       at_configuration_(silhouettes_at_configuration(cell, grid, settings)),
       fusion_(luts, silhouettes, settings, at_configuration_ ? &*at_configuration_ : nullptr),
+      separation_(separation_check(cell, grid, luts, settings)),
       sync_error_s_(settings.sync_error_s) {
   const std::size_t cameras = cell.cameras.size();
   if (reference_frames.size() != cameras || (!noise_bits.empty() && noise_bits.size() != cameras) ||
@@ -105,6 +121,16 @@ const CellSet& SensingPipeline::process(const std::vector<cv::Mat>& frames,
   times_.features_ms = ms_since(start);
   const auto fusion_start = std::chrono::steady_clock::now();
   const CellSet& forbidden = fusion_.fuse(observations_, robot_cell_, q);
+  verdict_ = SeparationVerdict{};
+  if (separation_) {
+    known_.resize(observations_.size());
+    obstacles_.resize(observations_.size());
+    for (std::size_t c = 0; c < observations_.size(); ++c) {
+      known_[c] = observations_[c].known;
+      obstacles_[c] = &fusion_.obstacles(c);
+    }
+    verdict_ = separation_->check(q, known_, obstacles_);
+  }
   times_.fusion_ms = ms_since(fusion_start);
   return forbidden;
 }

@@ -69,6 +69,10 @@ void SensingService::explain_stop(const ReceivedJointState& received) {
   explanations_.push_back(std::move(stop));
 }
 
+std::string all_forbidden_kind(const std::string& reason) {
+  return reason.substr(0, reason.find(':'));
+}
+
 std::vector<StopExplanation> SensingService::take_stop_explanations() {
   std::vector<StopExplanation> taken;
   taken.swap(explanations_);
@@ -100,6 +104,12 @@ const ServiceCycle& SensingService::process(const FrameSet& delivered) {
         cycle.blocked_per_camera.push_back(observation.blocked.count());
       }
       cycle.obstacle_per_camera = pipeline_.fusion().counts().obstacle_pixels;
+      if (pipeline_.separation_verdict().too_close) {
+        // Someone may be near enough to meet the robot before it could stop: stop it.
+        cycle.all_forbidden =
+            describe(pipeline_.separation_verdict(), *pipeline_.separation(), pipeline_.cell());
+        last_map_ = &all_forbidden_;
+      }
     } catch (const std::out_of_range& error) {
       cycle.all_forbidden = std::string("robot outside the grid: ") + error.what();
     }

@@ -1,5 +1,6 @@
 #include "safecell/silhouettes/configuration_silhouettes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -52,6 +53,12 @@ ConfigurationSilhouettes::ConfigurationSilhouettes(const CellModel& cell, double
 
 void ConfigurationSilhouettes::add_silhouettes(std::span<const double> q,
                                                std::vector<FeatureMask>& masks) const {
+  add_silhouettes(q, masks, 0, 1 + balls_.links.size());
+}
+
+void ConfigurationSilhouettes::add_silhouettes(std::span<const double> q,
+                                               std::vector<FeatureMask>& masks,
+                                               std::size_t first_body, std::size_t end_body) const {
   if (masks.size() != projections_.size() || q.size() != robot_.dof()) {
     throw std::invalid_argument(std::to_string(masks.size()) + " masks and " +
                                 std::to_string(q.size()) + " joint values for " +
@@ -63,8 +70,12 @@ void ConfigurationSilhouettes::add_silhouettes(std::span<const double> q,
   thread_local std::vector<double> joints;
   joints.assign(q.begin(), q.end());
   link_poses(robot_, joints, poses);
-  placed.assign(balls_.base.begin(), balls_.base.end());
-  for (std::size_t link = 0; link < balls_.links.size(); ++link) {
+  placed.clear();
+  if (first_body == 0 && end_body > 0) placed.assign(balls_.base.begin(), balls_.base.end());
+  // Body 1 + link is link `link`.
+  const std::size_t links_end = std::min(end_body, 1 + balls_.links.size());
+  for (std::size_t body = std::max<std::size_t>(first_body, 1); body < links_end; ++body) {
+    const std::size_t link = body - 1;
     for (const Ball& ball : balls_.links[link]) {
       placed.push_back(Ball{poses[link] * ball.centre_m, ball.radius_m});
     }

@@ -112,15 +112,25 @@ struct EntryConfig {
   SourceLine at;
 };
 
-// ISO 13855's minimum distance S = K * (t_response + t_stop) + C, kept between the robot and
-// every entry.
-struct EntrySeparationConfig {
+// ISO 13855's minimum distance S = K * (t_response + t_stop) + C: kept between the robot and
+// every entry (entry_separation), and between the robot and every person the cameras see in the
+// cell (protective_separation).
+struct SeparationDistanceConfig {
   double approach_speed_m_s = 1.6;  // K: people walk in at up to this speed
   double response_s = 0.1;          // a person crossing the entry -> the stop command
   double stopping_s = 0.3;          // the robot's stopping time from its top speed
   double intrusion_m = 0.2;         // C: a hand or arm reaching ahead of the body
   SourceLine at;
 };
+
+// The protective separation's defaults: ISO 13855's walking speed, a response of 0.1 s (a frame
+// period, the processing and the link) and a stop of 0.3 s, and no intrusion C: S = 0.64 m.
+inline constexpr double kMaxProtectiveSeparation_m = 0.95;
+inline SeparationDistanceConfig default_protective_separation() {
+  SeparationDistanceConfig separation;
+  separation.intrusion_m = 0.0;
+  return separation;
+}
 
 struct CellConfig {
   std::string name;
@@ -152,7 +162,13 @@ struct CellConfig {
   // the walls (a warning whenever the tables are loaded); set: at least one entry.
   std::optional<std::vector<EntryConfig>> entries;
   SourceLine entries_at;
-  EntrySeparationConfig entry_separation;
+  SeparationDistanceConfig entry_separation;
+  // The protective separation check (protective_separation.hpp): when the cameras see someone
+  // within this distance of the robot, the whole map is forbidden. Unset (`off`): not checked.
+  // Its intrusion C defaults to 0 (the cameras see an arm reaching out, unlike an entry's
+  // boundary).
+  std::optional<SeparationDistanceConfig> protective_separation;
+  SourceLine protective_separation_at;
 };
 
 }  // namespace safecell

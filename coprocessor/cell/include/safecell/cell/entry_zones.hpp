@@ -16,7 +16,7 @@
 namespace safecell {
 
 // S in metres.
-[[nodiscard]] double separation_distance_m(const EntrySeparationConfig& separation);
+[[nodiscard]] double separation_distance_m(const SeparationDistanceConfig& separation);
 
 // Per entry, the volume within S of its opening, inside the cell, floor to ceiling: a box S deep
 // from the wall and S wider than the opening on each side (clipped to the cell). Empty when the

@@ -25,6 +25,7 @@ struct ClosedLoopValidateOptions {
   double max_seconds = 30.0;
   std::size_t task_pool = 8;
   bool look_ahead_off = false;  // --negative-control look-ahead-off
+  bool separation_off = false;  // --negative-control separation-off: the cell's turned off
   std::string out_dir = "safecell-closed-loop";
   std::string controller_program;  // empty: found (find_controller_program)
   bool trace = false;              // a CSV per scenario (every cycle) into out_dir

@@ -13,6 +13,7 @@
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
+#include "safecell/separation/protective_separation.hpp"
 
 namespace safecell {
 
@@ -53,6 +54,14 @@ class SensingPipeline {
   [[nodiscard]] const std::vector<CameraObservation>& observations() const { return observations_; }
   [[nodiscard]] const CycleTimes& times() const { return times_; }
   [[nodiscard]] CellIndex robot_cell() const { return robot_cell_; }
+  [[nodiscard]] const CellModel& cell() const { return cell_; }
+  // The protective separation check (protective_separation.hpp) of the cell file, or nullptr when
+  // the cell turns it off or its robot's motion within the sync error is unbounded; and its
+  // verdict on the last frame set (not too close when there is no check).
+  [[nodiscard]] const ProtectiveSeparation* separation() const {
+    return separation_ ? &*separation_ : nullptr;
+  }
+  [[nodiscard]] const SeparationVerdict& separation_verdict() const { return verdict_; }
 
  private:
   const CellModel& cell_;
@@ -64,6 +73,10 @@ class SensingPipeline {
   std::vector<cv::Mat> images_;  // a frame set's images, unknown views empty
   std::optional<ConfigurationSilhouettes> at_configuration_;
   ForbiddenMapFusion fusion_;
+  std::optional<ProtectiveSeparation> separation_;
+  SeparationVerdict verdict_;
+  std::vector<bool> known_;                    // per camera, for the separation check
+  std::vector<const FeatureMask*> obstacles_;  // per camera, the fusion's
   CycleTimes times_;
   CellIndex robot_cell_ = 0;
   double sync_error_s_;

@@ -112,6 +112,11 @@ class SensingService {
   void explain_stop(const ReceivedJointState& received);
 };
 
+// The kind of a reason the whole map was forbidden (ServiceCycle::all_forbidden): its text before
+// the first colon ("robot pose unknown", "an obstacle within the protective separation
+// distance"), for counting cycles per reason.
+std::string all_forbidden_kind(const std::string& reason);
+
 // Seconds of the steady clock as its nanoseconds (exposure stamps to the link's clock).
 std::uint64_t steady_seconds_to_ns(double seconds);
 std::uint64_t steady_now_ns();

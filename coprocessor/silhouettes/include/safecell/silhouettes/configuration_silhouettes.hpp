@@ -41,6 +41,10 @@ class ConfigurationSilhouettes {
   // Thread-safe (scratch per thread). Throws std::invalid_argument for the wrong number of masks
   // or joint values.
   void add_silhouettes(std::span<const double> q, std::vector<FeatureMask>& masks) const;
+  // The same for the bodies first_body .. end_body - 1 alone (0: the base, 1 + j: link j; a
+  // robot part's range, robot_parts.hpp); a range past the robot's bodies is cut at its end.
+  void add_silhouettes(std::span<const double> q, std::vector<FeatureMask>& masks,
+                       std::size_t first_body, std::size_t end_body) const;
 
  private:
   RobotModel robot_;

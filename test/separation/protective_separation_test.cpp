@@ -1,0 +1,165 @@
+// The protective separation check against the exact distance (FCL) between each robot part and a
+// point, at random configurations and points, each point seen by every camera it projects into:
+// - a point within S of some part is always too close (the check's safety claim);
+// - points far beyond S are mostly not (the check is not a stop for anyone in the cell);
+// - negative control: the same check with S made 0.25 m too small misses points within S.
+// A failure prints the configuration, the point and the distances.
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <sstream>
+
+#include "safecell/cell/default_cell.hpp"
+#include "safecell/cell/entry_zones.hpp"
+#include "safecell/robot/kinematics.hpp"
+#include "safecell/separation/protective_separation.hpp"
+#include "safecell/sim/ground_truth.hpp"
+
+namespace safecell {
+namespace {
+
+constexpr double kBallRadius_m = 0.06;
+constexpr double kWidening_m = 0.02;
+
+struct Sample {
+  std::vector<double> q;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  std::vector<double> part_distance_m;  // FCL, per part
+  std::vector<bool> known;
+  std::vector<FeatureMask> obstacles;  // the point's feature cell in each camera it projects to
+  std::size_t seeing = 0;
+
+  [[nodiscard]] double nearest_m() const {
+    return *std::min_element(part_distance_m.begin(), part_distance_m.end());
+  }
+  [[nodiscard]] std::string text() const {
+    std::ostringstream out;
+    out << "q = [";
+    for (std::size_t j = 0; j < q.size(); ++j) out << (j ? ", " : "") << q[j];
+    out << "], point = [" << point.transpose() << "] m, distance per part:";
+    for (const double d : part_distance_m) out << ' ' << d;
+    out << " m, seen by " << seeing << " cameras";
+    return out.str();
+  }
+};
+
+class ProtectiveSeparationTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    cell_ = new CellModel(load_cell_model(default_cell()));
+    parts_ = new std::vector<RobotPart>(robot_parts(*cell_->robot, PartSplit::kArmSegments));
+  }
+  static void TearDownTestSuite() {
+    delete parts_;
+    delete cell_;
+  }
+
+  static ProtectiveSeparation check_with(double separation_m) {
+    return ProtectiveSeparation(*cell_, *parts_, kBallRadius_m, kWidening_m, separation_m,
+                                cell_->camera_threshold);
+  }
+
+  // A random configuration and a random point within 1.6 m of the robot's base axis, up to 2 m
+  // high; the point seen by every camera it projects into.
+  static Sample draw(std::mt19937_64& rng) {
+    const RobotModel& robot = *cell_->robot;
+    Sample sample;
+    for (std::size_t j = 0; j < robot.dof(); ++j) {
+      sample.q.push_back(std::uniform_real_distribution<double>(robot.joints[j].lower,
+                                                                robot.joints[j].upper)(rng));
+    }
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    sample.point = Eigen::Vector3d(1.6 * unit(rng), 1.6 * unit(rng), 1.0 + unit(rng));
+    const GroundTruth truth(
+        {PlacedShape{Sphere{0.001}, Eigen::Isometry3d(Eigen::Translation3d(sample.point))}});
+    for (const RobotPart& part : *parts_) {
+      sample.part_distance_m.push_back(
+          truth.min_distance_m(collision_shapes_at(robot, sample.q, Eigen::Isometry3d::Identity(),
+                                                   BodyRange{part.first_body, part.end_body})));
+    }
+    for (const PinholeCamera& camera : cell_->cameras) {
+      FeatureMask mask(cell_->feature_grid);
+      const auto pixel = camera.project(sample.point);
+      const auto feature = pixel ? cell_->feature_grid.cell_of(*pixel) : std::nullopt;
+      if (feature) {
+        mask.set(feature->column, feature->row);
+        ++sample.seeing;
+      }
+      sample.known.push_back(true);
+      sample.obstacles.push_back(std::move(mask));
+    }
+    return sample;
+  }
+
+  static bool too_close(const ProtectiveSeparation& check, const Sample& sample) {
+    std::vector<const FeatureMask*> obstacles;
+    for (const FeatureMask& mask : sample.obstacles) obstacles.push_back(&mask);
+    return check.check(sample.q, sample.known, obstacles).too_close;
+  }
+
+  static inline CellModel* cell_ = nullptr;
+  static inline std::vector<RobotPart>* parts_ = nullptr;
+};
+
+TEST_F(ProtectiveSeparationTest, EveryPointWithinTheDistanceIsTooCloseAndFarPointsMostlyAreNot) {
+  const double s = separation_distance_m(default_protective_separation());
+  const ProtectiveSeparation check = check_with(s);
+  const ProtectiveSeparation too_small = check_with(s - 0.25);  // the negative control
+  std::mt19937_64 rng(20261204);
+  std::size_t within = 0;
+  std::size_t missed_by_control = 0;
+  std::size_t far = 0;
+  std::size_t far_too_close = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Sample sample = draw(rng);
+    if (sample.seeing < static_cast<std::size_t>(cell_->camera_threshold)) continue;
+    const double nearest = sample.nearest_m();
+    if (nearest < s) {
+      ++within;
+      ASSERT_TRUE(too_close(check, sample))
+          << "within " << s << " m and not too close: " << sample.text();
+      if (!too_close(too_small, sample)) ++missed_by_control;
+    } else if (nearest > s + 0.5) {
+      ++far;
+      if (too_close(check, sample)) ++far_too_close;
+    }
+  }
+  RecordProperty("within", static_cast<int>(within));
+  RecordProperty("far", static_cast<int>(far));
+  RecordProperty("far_too_close", static_cast<int>(far_too_close));
+  RecordProperty("missed_by_control", static_cast<int>(missed_by_control));
+  EXPECT_GE(within, 300U);
+  EXPECT_GE(far, 100U);
+  // Not a stop for anyone anywhere: at least half of the points 0.5 m beyond S pass.
+  EXPECT_LT(far_too_close * 2, far) << far_too_close << " of " << far << " far points too close";
+  // The check of a too small S misses points within S: the test above can fail.
+  EXPECT_GT(missed_by_control, 0U);
+}
+
+TEST_F(ProtectiveSeparationTest, UnknownViewsCountAsSeeingSomeone) {
+  const ProtectiveSeparation check = check_with(0.5);
+  std::vector<double> q(cell_->robot->dof(), 0.0);
+  std::vector<FeatureMask> empty(cell_->cameras.size(), FeatureMask(cell_->feature_grid));
+  std::vector<const FeatureMask*> obstacles;
+  for (const FeatureMask& mask : empty) obstacles.push_back(&mask);
+  std::vector<bool> known(cell_->cameras.size(), true);
+  EXPECT_FALSE(check.check(q, known, obstacles).too_close);
+  for (int c = 0; c < cell_->camera_threshold; ++c) known[static_cast<std::size_t>(c)] = false;
+  const SeparationVerdict verdict = check.check(q, known, obstacles);
+  EXPECT_TRUE(verdict.too_close);
+  EXPECT_EQ(verdict.cameras.size(), static_cast<std::size_t>(cell_->camera_threshold));
+  EXPECT_NE(describe(verdict, check, *cell_).find("cam0"), std::string::npos);
+}
+
+TEST_F(ProtectiveSeparationTest, AbsurdSettingsAreRefused) {
+  EXPECT_THROW(check_with(-0.1), std::invalid_argument);
+  EXPECT_THROW(check_with(1.2), std::invalid_argument);
+  EXPECT_THROW(ProtectiveSeparation(*cell_, {}, kBallRadius_m, kWidening_m, 0.5, 2),
+               std::invalid_argument);
+  EXPECT_THROW(ProtectiveSeparation(*cell_, *parts_, kBallRadius_m, kWidening_m, 0.5, 9),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace safecell
