@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Runs the closed-loop validation for docs/validation.md: `safecell validate --closed-loop` on the
 # default cell, the main run split into two shards that run side by side (one per core; each
-# scenario's loop is sequential), and the negative control (the controller's look-ahead off) on
-# the first tenth of the same scenarios. Keeps the JSON reports in docs/validation/; then
-# docs/validation_tables.py writes the closed-loop section from them. About 45 minutes on 2 cores
+# scenario's loop is sequential), the negative control (the controller's look-ahead off) on the
+# first tenth of the same scenarios, and on those the protective separation turned off. Keeps the
+# JSON reports in docs/validation/; then docs/validation_tables.py writes the closed-loop section
+# from them. About 45 minutes on 2 cores
 # for 1,000 scenarios. Needs a host build and python3.
 #
 #   bash docs/closed_loop_validation.sh [SCENARIOS]   (default 1000)
@@ -44,4 +45,6 @@ first=$!
 run closed-loop-2 --first "$half" --scenarios "$(( scenarios - half ))"
 wait "$first"
 run closed-loop-control --first 0 --scenarios "$control" --negative-control look-ahead-off
+# The ablation of the protective separation: the same scenarios without it.
+run closed-loop-separation-off --first 0 --scenarios "$control" --negative-control separation-off
 echo "closed_loop_validation.sh: done; now python3 docs/validation_tables.py (or validation.sh)" >&2

@@ -47,13 +47,13 @@ run ablation-padding-0.05 --scenes "$small" --padding 0.05
 run ablation-ball-0.04 --scenes "$small" --ball-radius 0.04
 run ablation-ball-0.09 --scenes "$small" --ball-radius 0.09
 run ablation-m-max-0.12 --scenes "$small" --m-max 0.12
-run ablation-threshold-3 --scenes "$small" --camera-threshold 3
+run ablation-threshold-2 --scenes "$small" --camera-threshold 2
 run ablation-hidden-votes --scenes "$small" --hidden-votes on
-run ablation-hidden-votes-threshold-3 --scenes "$small" --hidden-votes on --camera-threshold 3
+run ablation-hidden-votes-threshold-2 --scenes "$small" --hidden-votes on --camera-threshold 2
 run ablation-parts-whole-robot --scenes "$small" --robot-parts whole-robot
 run ablation-parts-per-link --scenes "$small" --robot-parts per-link
-run ablation-parts-whole-robot-threshold-3 --scenes "$small" --robot-parts whole-robot \
-  --camera-threshold 3
+run ablation-parts-whole-robot-threshold-2 --scenes "$small" --robot-parts whole-robot \
+  --camera-threshold 2
 
 echo "validation.sh: blind spots: safecell cell coverage --out $out/coverage" >&2
 "$safecell" cell coverage --out "$out/coverage" --json >/dev/null

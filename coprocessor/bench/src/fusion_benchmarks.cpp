@@ -11,11 +11,13 @@
 
 #include "default_cell_tables.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
+#include "safecell/cell/entry_zones.hpp"
 #include "safecell/explain/cell_explanation.hpp"
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
+#include "safecell/separation/protective_separation.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim_sources/simulated_reference.hpp"
 
@@ -33,8 +35,9 @@ struct FusionSetUp {
   std::vector<CameraObservation> typical;         // the robot and a human near it
   std::vector<CameraObservation> thirty_percent;  // 30 % of every mask blocked
 
+  std::vector<double> q{0.6, 0.3, 0.8, 0.0, 0.5, 0.0};  // the robot's configuration
+
   FusionSetUp() {
-    const std::vector<double> q{0.6, 0.3, 0.8, 0.0, 0.5, 0.0};
     JointAngles angles;
     for (std::size_t j = 0; j < q.size(); ++j) angles.rad[j] = q[j];
     robot_cell = grid.cell_containing(angles).value();
@@ -143,6 +146,29 @@ void stop_explanation_typical_scene(benchmark::State& state) {
   state.counters["voting_cameras"] = static_cast<double>(voting_cameras);
 }
 
+// The protective separation check of the typical scene (the person about 1.3 m from the base):
+// each robot part grown by the default cell's S, projected into every camera, against the
+// obstacles after robot removal. Part of every cycle's fusion_ms in the pipeline.
+void protective_separation_typical_scene(benchmark::State& state) {
+  const FusionSetUp& fusion = set_up();
+  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes,
+                            FusionSettings{fusion.cell.camera_threshold});
+  const std::vector<double> q = fusion.q;
+  engine.fuse(fusion.typical, fusion.robot_cell, q);
+  const ProtectiveSeparation check(
+      fusion.cell, fusion.luts.parts, ModelLutOptions{}.ball_radius_m, FusionSettings{}.padding_m,
+      separation_distance_m(default_protective_separation()), fusion.cell.camera_threshold);
+  std::vector<bool> known(fusion.typical.size(), true);
+  std::vector<const FeatureMask*> obstacles;
+  for (std::size_t c = 0; c < fusion.typical.size(); ++c) obstacles.push_back(&engine.obstacles(c));
+  bool too_close = false;
+  while (state.KeepRunning()) {
+    too_close = check.check(q, known, obstacles).too_close;
+    benchmark::DoNotOptimize(too_close);
+  }
+  state.counters["too_close"] = too_close ? 1.0 : 0.0;
+}
+
 void fusion_baseline_typical_scene(benchmark::State& state) {
   const FusionSetUp& fusion = set_up();
   BaselineFusion engine(fusion.luts, fusion.silhouettes,
@@ -179,6 +205,8 @@ void register_fusion_benchmarks() {
   register_benchmark("fusion_typical_scene_hidden_votes", fusion_typical_scene_hidden_votes,
                      benchmark::kMicrosecond);
   register_benchmark("stop_explanation_typical_scene", stop_explanation_typical_scene,
+                     benchmark::kMicrosecond);
+  register_benchmark("protective_separation_typical_scene", protective_separation_typical_scene,
                      benchmark::kMicrosecond);
   register_benchmark("robot_silhouettes_of_one_cell", robot_silhouettes_of_one_cell,
                      benchmark::kMicrosecond);

@@ -35,6 +35,8 @@ constexpr NamedFigure kNamedFigures[] = {
     {"robot_silhouettes_of_one_cell", "lut1_model_ms", "lut1_model_worst_ms"},
     {"fusion_typical_scene_hidden_votes", "fusion_hidden_votes_ms", "fusion_hidden_votes_worst_ms"},
     {"stop_explanation_typical_scene", "stop_explanation_ms", "stop_explanation_worst_ms"},
+    {"protective_separation_typical_scene", "protective_separation_ms",
+     "protective_separation_worst_ms"},
 };
 
 // Counters of a benchmark that become top-level figures.

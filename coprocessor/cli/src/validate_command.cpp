@@ -132,6 +132,14 @@ void print_report(const ValidationRun& run, const ValidationReport& report, std:
         << ", visual hull / phantoms " << percent(report.causes.share(report.causes.visual_hull))
         << ", envelope width " << percent(report.causes.share(report.causes.envelope)) << "\n";
   }
+  if (report.separation.scenes > 0) {
+    const SeparationFigures& separation = report.separation;
+    out << "  protective separation: stopped the robot in " << grouped(separation.fired) << " of "
+        << grouped(separation.scenes) << " scenes; a visible body within its distance in "
+        << grouped(separation.within) << ", missed " << separation.missed << "; every body "
+        << "0.5 m beyond it in " << grouped(separation.far) << ", stopped all the same "
+        << percent(separation.needless_share()) << "\n";
+  }
   if (run.model_error.any()) {
     out << "  model error in the simulated world: cameras turned "
         << fixed(run.model_error.camera_rotation_deg, 2) << " deg, moved "
@@ -167,7 +175,7 @@ int emit(const ValidationRun& run, const ValidationReport& report, bool json, st
   } else {
     print_report(run, report, out);
   }
-  return report.missed == 0 ? 0 : kExitValidationFailed;
+  return report.missed == 0 && report.separation.missed == 0 ? 0 : kExitValidationFailed;
 }
 
 }  // namespace

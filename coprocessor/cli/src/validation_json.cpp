@@ -96,6 +96,13 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["forbidden_share"] = report.forbidden_share();
   json["forbidden_share_sum"] = report.forbidden_share_sum;
   json["scenes_per_stratum"] = report.scenes_per_stratum;
+  json["protective_separation"] = {{"scenes", report.separation.scenes},
+                                   {"fired", report.separation.fired},
+                                   {"within", report.separation.within},
+                                   {"missed", report.separation.missed},
+                                   {"far", report.separation.far},
+                                   {"needless", report.separation.needless},
+                                   {"needless_share", report.separation.needless_share()}};
   Json strata = Json::object();
   for (const auto& [name, counts] : report.strata) strata[name] = stratum_json(counts);
   json["strata"] = std::move(strata);
@@ -164,6 +171,15 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
   report.forbidden_share_sum = field<double>(json, "forbidden_share_sum", source);
   report.scenes_per_stratum =
       field<std::map<std::string, std::size_t>>(json, "scenes_per_stratum", source);
+  if (json.contains("protective_separation")) {  // reports before it have none
+    const auto separation = field<nlohmann::json>(json, "protective_separation", source);
+    report.separation.scenes = field<std::size_t>(separation, "scenes", source);
+    report.separation.fired = field<std::size_t>(separation, "fired", source);
+    report.separation.within = field<std::size_t>(separation, "within", source);
+    report.separation.missed = field<std::size_t>(separation, "missed", source);
+    report.separation.far = field<std::size_t>(separation, "far", source);
+    report.separation.needless = field<std::size_t>(separation, "needless", source);
+  }
   const auto strata = field<nlohmann::json>(json, "strata", source);
   if (!strata.is_object()) {
     throw InputError(source + ": key 'strata' holds " + strata.dump() +

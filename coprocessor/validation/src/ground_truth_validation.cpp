@@ -10,6 +10,7 @@
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim_sources/simulated_reference.hpp"
 #include "safecell/validation/percentile.hpp"
+#include "safecell/validation/separation_check.hpp"
 
 namespace safecell {
 namespace {
@@ -101,6 +102,11 @@ class Worker {
                                     &fusion->parts()};
     static_cast<SceneCheck&>(result.report) =
         check_scene(world_, grid_, sim_, under_test, options_.configurations_per_scene, rng);
+    if (const ProtectiveSeparation* separation = pipeline_.separation()) {
+      result.report.separation =
+          check_separation(world_, placed.scene, object_ids, options_.fusion.camera_threshold,
+                           separation->separation_m(), pipeline_.separation_verdict().too_close);
+    }
     result.report.scenes = 1;
     result.report.objects = placed.scene.objects.size();
     result.report.forbidden_share_sum =
@@ -136,6 +142,7 @@ ValidationReport& ValidationReport::operator+=(const ValidationReport& other) {
   scenes += other.scenes;
   objects += other.objects;
   forbidden_share_sum += other.forbidden_share_sum;
+  separation += other.separation;
   for (const auto& [name, count] : other.scenes_per_stratum) scenes_per_stratum[name] += count;
   fusion_ms_p99 = std::max(fusion_ms_p99, other.fusion_ms_p99);
   features_ms_p99 = std::max(features_ms_p99, other.features_ms_p99);

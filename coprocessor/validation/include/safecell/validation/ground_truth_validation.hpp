@@ -26,6 +26,7 @@
 #include "safecell/validation/negative_controls.hpp"
 #include "safecell/validation/scene_check.hpp"
 #include "safecell/validation/scene_strata.hpp"
+#include "safecell/validation/separation_check.hpp"
 
 namespace safecell {
 
@@ -62,6 +63,7 @@ struct ValidationReport : SceneCheck {
   std::size_t objects = 0;           // boxes placed, over all scenes
   double forbidden_share_sum = 0.0;  // the grid's forbidden share, summed over the scenes
   std::map<std::string, std::size_t> scenes_per_stratum;
+  SeparationFigures separation;  // the protective separation check (none when the cell has none)
   double fusion_ms_p99 = 0.0;    // a merge keeps the largest
   double features_ms_p99 = 0.0;  // a merge keeps the largest
 

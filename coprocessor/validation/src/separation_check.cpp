@@ -1,0 +1,66 @@
+#include "safecell/validation/separation_check.hpp"
+
+#include <limits>
+
+#include "safecell/robot/kinematics.hpp"
+#include "safecell/sim/body_id.hpp"
+#include "safecell/sim/ground_truth.hpp"
+#include "safecell/sim/human_figure.hpp"
+#include "safecell/validation/body_visibility.hpp"
+#include "safecell/validation/scene_check.hpp"
+
+namespace safecell {
+
+SeparationFigures& SeparationFigures::operator+=(const SeparationFigures& other) {
+  scenes += other.scenes;
+  fired += other.fired;
+  within += other.within;
+  missed += other.missed;
+  far += other.far;
+  needless += other.needless;
+  return *this;
+}
+
+double SeparationFigures::needless_share() const {
+  return far == 0 ? 0.0 : static_cast<double>(needless) / static_cast<double>(far);
+}
+
+SeparationFigures check_separation(const CellModel& world, const SimScene& scene,
+                                   const std::vector<cv::Mat>& object_ids, int camera_threshold,
+                                   double separation_m, bool fired) {
+  const std::vector<PlacedShape> robot = collision_shapes_at(*world.robot, scene.q);
+  const std::size_t bodies = scene.humans.size() + scene.objects.size();
+  double nearest_visible_m = std::numeric_limits<double>::infinity();
+  double nearest_m = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const bool human = b < scene.humans.size();
+    const std::vector<PlacedShape> shapes =
+        human ? human_shapes(scene.humans[b])
+              : std::vector<PlacedShape>{scene.objects[b - scene.humans.size()]};
+    const double distance_m = GroundTruth(shapes).min_distance_m(robot);
+    const BodyCode code = human ? body_code(BodyKind::kHuman, b)
+                                : body_code(BodyKind::kObject, b - scene.humans.size());
+    int cameras_visible = 0;
+    for (const cv::Mat& ids : object_ids) {
+      cameras_visible += front_most_cells(ids, code, world.feature_grid).any() ? 1 : 0;
+    }
+    nearest_m = std::min(nearest_m, distance_m);
+    if (cameras_visible >= camera_threshold) {
+      nearest_visible_m = std::min(nearest_visible_m, distance_m);
+    }
+  }
+  SeparationFigures figures;
+  figures.scenes = 1;
+  figures.fired = fired ? 1 : 0;
+  if (nearest_visible_m < separation_m) {
+    figures.within = 1;
+    figures.missed = fired ? 0 : 1;
+  }
+  if (nearest_m >= separation_m + kClearDistance_m) {
+    figures.far = 1;
+    figures.needless = fired ? 1 : 0;
+  }
+  return figures;
+}
+
+}  // namespace safecell
