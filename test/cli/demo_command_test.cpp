@@ -121,6 +121,17 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
       summary["stops"].get<int>() + summary["slowdowns"].get<int>() + summary["faults"].get<int>(),
       1);
   EXPECT_LT(summary["min_human_distance_m"].get<double>(), 2.0);
+  // With the person within 1 m of the arm, the share of the C-space the map left free, and the
+  // share the maps sent left free (the protective separation forbids a map whole), both shares.
+  for (const char* share : {"near_person_map_free_share", "near_person_sent_free_share"}) {
+    ASSERT_TRUE(summary.contains(share)) << share;
+    EXPECT_GE(summary[share].get<double>(), 0.0) << share;
+    EXPECT_LE(summary[share].get<double>(), 1.0) << share;
+  }
+  EXPECT_LE(summary["near_person_sent_free_share"].get<double>(),
+            summary["near_person_map_free_share"].get<double>());
+  EXPECT_LE(summary["near_person_separation_frames"].get<int>(),
+            summary["near_person_frames"].get<int>());
   // Every slow-down or stop for a forbidden cell in the robot's way was explained with the map the
   // controller held, and that map did forbid the cell: never "not forbidden" (controller and
   // coprocessor would disagree on the cell) nor "no longer kept" (the views were lost).

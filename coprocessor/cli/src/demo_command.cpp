@@ -19,7 +19,10 @@
 #include "safecell/closed_loop/controller_session.hpp"
 #include "safecell/closed_loop/live_simulated_cameras.hpp"
 #include "safecell/files/read_file.hpp"
+#include "safecell/robot/kinematics.hpp"
+#include "safecell/sim/ground_truth.hpp"
 #include "safecell/validation/configuration_strata.hpp"
+#include "safecell/validation/scene_check.hpp"
 #include "scene_options.hpp"
 #include "service_status.hpp"
 #include "simulated_sensing.hpp"
@@ -27,6 +30,27 @@
 
 namespace safecell {
 namespace {
+
+// The near-person figures of one cycle whose map the pipeline made (not one forbidden whole for
+// want of the robot's pose).
+void add_near_person_figures(const SimulatedSensing& sensing, const SimScene& scene,
+                             const ServiceCycle& cycle, NearPersonFreeSpace& figures) {
+  const bool separation = all_forbidden_kind(cycle.all_forbidden) ==
+                          "an obstacle within the protective separation "
+                          "distance";
+  if (scene.humans.empty() || !cycle.pose_known || (!cycle.all_forbidden.empty() && !separation)) {
+    return;
+  }
+  const double distance_m = GroundTruth(moving_bodies(scene))
+                                .min_distance_m(collision_shapes_at(sensing.sim.robot(), scene.q));
+  if (distance_m >= NearPersonFreeSpace::kNear_m) return;
+  const auto cells = static_cast<double>(sensing.grid.cell_count());
+  ++figures.frames;
+  figures.separation_frames += separation ? 1 : 0;
+  figures.map_free_sum +=
+      1.0 - static_cast<double>(sensing.pipeline.fusion().forbidden().count()) / cells;
+  figures.sent_free_sum += 1.0 - static_cast<double>(cycle.forbidden_cells) / cells;
+}
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -184,6 +208,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
                                                               incidents ? &*incidents : nullptr)) {
       run.stop_explanations.push_back(std::move(stop));
     }
+    add_near_person_figures(sensing, cameras.last_scene(), cycle, run.near_person);
     CycleRecord cycle_record;
     cycle_record.exposure_s = time_s;
     cycle_record.sent_s = seconds_since_start(cycle.sent_ns);

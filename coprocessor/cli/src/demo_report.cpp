@@ -18,6 +18,8 @@
 namespace safecell {
 namespace {
 
+std::string share_text(double share) { return fixed(100.0 * share, 1) + " %"; }
+
 std::string numbered(const char* stem, std::size_t cycle, const char* suffix) {
   char name[64];
   std::snprintf(name, sizeof name, "%s%04zu%s", stem, cycle, suffix);
@@ -92,6 +94,10 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
   summary["samples_checked"] = contacts.samples_checked;
   summary["task_completed"] = task.completed_after_person_left;
   summary["moves_completed"] = task.moves_completed;
+  summary["near_person_frames"] = run.near_person.frames;
+  summary["near_person_separation_frames"] = run.near_person.separation_frames;
+  summary["near_person_map_free_share"] = run.near_person.map_free_share();
+  summary["near_person_sent_free_share"] = run.near_person.sent_free_share();
   summary["task_time_s"] = task.move_time_s;
   summary["task_time_without_people_s"] = task.move_time_without_people_s;
   summary["e2e_latency_p50_ms"] = percentile(states.latency_ms, 0.5);
@@ -149,6 +155,12 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
       {"frames / skipped",
        std::to_string(record.cycles.size()) + " / " + std::to_string(run.frames_skipped)},
       {"slow-downs and stops explained", std::to_string(run.stop_explanations.size())},
+      {"C-space free with the person within 1 m: the map / the maps sent",
+       share_text(run.near_person.map_free_share()) + " / " +
+           share_text(run.near_person.sent_free_share()) + " over " +
+           std::to_string(run.near_person.frames) + " frames (" +
+           std::to_string(run.near_person.separation_frames) +
+           " forbidden whole by the protective separation)"},
   };
   // The first few explanations, as the log shows them (all of them are in summary.json).
   for (std::size_t k = 0; k < run.stop_explanations.size() && k < 5; ++k) {
@@ -187,6 +199,11 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
       << fixed(task.move_time_without_people_s, 2) << " s without; task "
       << (task.completed_after_person_left ? "completed" : "NOT completed")
       << " after the person left\n"
+      << "  person within 1 m of the robot in " << run.near_person.frames
+      << " frames: the map left " << share_text(run.near_person.map_free_share())
+      << " of the C-space free, the maps sent " << share_text(run.near_person.sent_free_share())
+      << " (" << run.near_person.separation_frames
+      << " forbidden whole by the protective separation)\n"
       << "  latency exposure -> map in the controller: p50 "
       << fixed(percentile(states.latency_ms, 0.5), 1) << " ms, p99 "
       << fixed(percentile(states.latency_ms, 0.99), 1) << " ms; fusion p99 "

@@ -36,6 +36,23 @@ inline constexpr double kDemoPathSeconds = 3.0;  // of the robot's path drawn on
 cv::Mat demo_views_picture(const std::vector<cv::Mat>& frames, const SensingPipeline& pipeline,
                            const CellModel& cell, const std::string& state);
 
+// While the person is within 1 m of the robot (FCL, at each frame's exposure): how much of the
+// C-space the fused map and the map sent (forbidden whole by the protective separation) left free.
+struct NearPersonFreeSpace {
+  static constexpr double kNear_m = 1.0;
+  std::size_t frames = 0;
+  std::size_t separation_frames = 0;  // of them, maps the protective separation forbade whole
+  double map_free_sum = 0.0;          // the fused map's free share, summed over the frames
+  double sent_free_sum = 0.0;         // the sent map's
+
+  [[nodiscard]] double map_free_share() const {
+    return frames == 0 ? 0.0 : map_free_sum / static_cast<double>(frames);
+  }
+  [[nodiscard]] double sent_free_share() const {
+    return frames == 0 ? 0.0 : sent_free_sum / static_cast<double>(frames);
+  }
+};
+
 struct DemoRun {
   double seconds = 0.0;
   double fps = 0.0;
@@ -46,6 +63,7 @@ struct DemoRun {
   std::size_t frames_skipped = 0;
   std::vector<double> acknowledged_s;  // when the demo's operator acknowledged a fault
   std::vector<IncidentExplanation> stop_explanations;  // why the controller slowed or stopped
+  NearPersonFreeSpace near_person;
   bool controller_died = false;
   std::optional<int> controller_exit;
 };
