@@ -81,7 +81,7 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   EXPECT_EQ(model.feature_grid.cell_width_px(), 11);
   EXPECT_EQ(model.feature_grid.cell_height_px(), 9);
   ASSERT_EQ(model.obstacles.size(), 1u);
-  EXPECT_EQ(model.camera_threshold, 3);
+  EXPECT_EQ(model.camera_threshold, 2);
   ASSERT_TRUE(model.config.protective_separation.has_value());
   EXPECT_NEAR(separation_distance_m(*model.config.protective_separation), 0.64, 1e-12);
   EXPECT_EQ(model.feature_weights.average, 2);
