@@ -30,7 +30,9 @@ struct GrossMotionConfig {
   double max_speed_rad_s[kMaxJoints]{};  // per joint, the motion's speed at scale 1
   double accel_rad_s2[kMaxJoints]{};     // used to slow down into the goal
   double goal_tolerance_rad = 0.005;
-  double give_up_s = 10.0;        // blocked this long without a path: failed
+  // Blocked this long without a path: failed. Longer than a person stands next to the arm: the
+  // coprocessor's protective separation forbids the whole map for as long as they do.
+  double give_up_s = 30.0;
   std::uint32_t local_cells = 4;  // the local planner's reach (0: always search)
 };
 
