@@ -107,6 +107,13 @@ void expect_agreement(const FusionSettings& settings) {
       cells.push_back(cell);
     }
     for (int k = 0; k < 6; ++k) cells.push_back(any_cell(run.rng()));
+    // Static cells from random places (random cells alone may meet none: the coarse grid has
+    // few), so that every seed tests the static explanation.
+    for (int k = 0; k < 6; ++k) {
+      CellIndex cell = luts.static_cells.next_set(any_cell(run.rng()));
+      if (cell >= tables.grid.cell_count()) cell = luts.static_cells.next_set(0);
+      if (cell < tables.grid.cell_count()) cells.push_back(cell);
+    }
     for (const CellIndex cell : cells) {
       const CellExplanation explanation = explain_cell(fusion, history.find(version), cell);
       EXPECT_EQ(explanation.map_version, version);
