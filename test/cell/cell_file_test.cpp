@@ -134,12 +134,39 @@ TEST(CellFile, TheProtectiveSeparationIsOnUnlessTheCellTurnsItOff) {
 
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: on\n"),
             "bad.yaml:11: protective_separation: value 'on', expected off or a mapping of "
-            "approach_speed_m_s, response_s, stopping_s, intrusion_m");
+            "approach_speed_m_s, response_s, stopping_s, intrusion_m, reduced_speeds");
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: {stopping_s: 0.5}\n"),
             "bad.yaml:11: protective_separation: a separation distance of 0.96 m, expected at "
             "most 0.95 m (the robot would stop for anyone in most of the cell)");
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: {response_s: 0}\n"),
             "bad.yaml:11: protective_separation.response_s: value 0, expected 0.01 .. 2 s");
+}
+
+TEST(CellFile, TheProtectiveSeparationsReducedSpeeds) {
+  EXPECT_EQ(parse_cell_yaml(kTwoJoints, "two.yaml").protective_reduced_speeds,
+            (std::vector<double>{0.5, 0.25}));
+  EXPECT_EQ(parse_cell_yaml(std::string(kTwoJoints) +
+                                "protective_separation: {reduced_speeds: [0.6, 0.3, 0.1]}\n",
+                            "two.yaml")
+                .protective_reduced_speeds,
+            (std::vector<double>{0.6, 0.3, 0.1}));
+  EXPECT_TRUE(
+      parse_cell_yaml(std::string(kTwoJoints) + "protective_separation: {reduced_speeds: []}\n",
+                      "two.yaml")
+          .protective_reduced_speeds.empty());
+  EXPECT_EQ(
+      error_of(std::string(kTwoJoints) + "protective_separation: {reduced_speeds: [0.3, 0.5]}\n"),
+      "bad.yaml:11: protective_separation.reduced_speeds[1]: value 0.5, expected less than "
+      "the speed before it");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: {reduced_speeds: [1]}\n"),
+            "bad.yaml:11: protective_separation.reduced_speeds[0]: value 1, expected 0.05 .. 0.95 "
+            "(a fraction of the top speed)");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "protective_separation: {reduced_speeds: 0.5}\n"),
+            "bad.yaml:11: protective_separation.reduced_speeds: expected a list of at most 4 "
+            "speeds (fractions of the top speed), got '0.5'");
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {reduced_speeds: [0.5]}\n"),
+            "bad.yaml:11: entry_separation.reduced_speeds: unknown field (expected one of: "
+            "approach_speed_m_s, response_s, stopping_s, intrusion_m)");
 }
 
 TEST(CellFile, CameraSources) {

@@ -176,16 +176,20 @@ TEST_F(ControllerLinkTest, AChunkOfAnUnknownKindIsRefusedAsCorruption) {
 }
 
 // A keyframe of `map` in one chunk, sealed, whose hash was bound to `bound_healthy` cameras and
-// which says `healthy` (they differ when a fault behind a valid CRC changed the count).
+// `bound_reduction` and which says `healthy` and `reduction` (they differ when a fault behind a
+// valid CRC changed them).
 Bytes keyframe_saying(ScriptedCoprocessor& sender, const std::vector<std::uint64_t>& map,
                       std::uint64_t version, std::uint32_t bound_healthy, std::uint32_t healthy,
-                      std::uint64_t now) {
+                      std::uint64_t now, std::uint32_t bound_reduction = 0,
+                      std::uint32_t reduction = 0) {
   safecell_v1_Message message = safecell_v1_Message_init_zero;
   message.which_body = safecell_v1_Message_map_chunk_tag;
   safecell_v1_MapChunk& chunk = message.body.map_chunk;
   chunk.kind = safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
   chunk.map_version = version;
-  chunk.map_hash = map_hash_with_cameras(map_hash(map.data(), kCells), bound_healthy, 4);
+  chunk.map_hash = map_hash_with_speed_reduction(
+      map_hash_with_cameras(map_hash(map.data(), kCells), bound_healthy, 4), bound_reduction);
+  chunk.speed_reduction_permille = reduction;
   chunk.chunk_count = 1;
   std::size_t size = 0;
   chunk.end_cell = encode_keyframe_chunk(map.data(), kCells, 0, chunk.runs.bytes,
@@ -235,6 +239,35 @@ TEST_F(ControllerLinkTest, ACameraCountChangedBehindTheCrcIsRefused) {
     deliver(coprocessor_.seal_payload(payload, 49 * kMs, 50 * kMs), 51 * kMs);
     EXPECT_EQ(link_.healthy_cameras(), reported == 0 ? 0u : 1u) << "a report of " << reported;
   }
+}
+
+// The speed reduction a map was sent with is bound into its hash too: a reduction lowered behind
+// a valid CRC is refused and the held map keeps its limit; the honest reduction is taken with
+// its map, and the next map without one lifts it.
+TEST_F(ControllerLinkTest, ASpeedReductionChangedBehindTheCrcIsRefused) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  const auto first = map_with(100, 900);
+  deliver(keyframe_saying(coprocessor_, first, 1, 4, 4, 20 * kMs, 750, 750), 21 * kMs);
+  ASSERT_EQ(store_.store().version(), 1u);
+  EXPECT_DOUBLE_EQ(link_.separation_speed_limit(), 0.25);
+
+  const auto second = map_with(2000, 2600);
+  deliver(keyframe_saying(coprocessor_, second, 2, 4, 4, 30 * kMs, 750, 0), 31 * kMs);
+  EXPECT_EQ(store_.store().version(), 1u);
+  EXPECT_EQ(link_.hash_mismatches(), 1u);
+  EXPECT_DOUBLE_EQ(link_.separation_speed_limit(), 0.25);
+
+  // The control: the same map with the reduction it was bound to; then none.
+  deliver(keyframe_saying(coprocessor_, second, 3, 4, 4, 40 * kMs, 500, 500), 41 * kMs);
+  EXPECT_EQ(store_.store().version(), 3u);
+  EXPECT_DOUBLE_EQ(link_.separation_speed_limit(), 0.5);
+  deliver(keyframe_saying(coprocessor_, second, 4, 4, 4, 50 * kMs), 51 * kMs);
+  EXPECT_EQ(store_.store().version(), 4u);
+  EXPECT_DOUBLE_EQ(link_.separation_speed_limit(), 1.0);
+  // A reduction of 1000 or more (never sent: the publisher refuses more) is a stop.
+  deliver(keyframe_saying(coprocessor_, second, 5, 4, 4, 60 * kMs, 4000, 4000), 61 * kMs);
+  EXPECT_EQ(store_.store().version(), 5u);
+  EXPECT_EQ(link_.separation_speed_limit(), 0.0);
 }
 
 TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {

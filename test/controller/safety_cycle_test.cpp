@@ -252,6 +252,38 @@ TEST_F(SafetyCycleTest, ALookAheadStopIsCategoryTwoAndLiftsWhenTheWayIsFree) {
   EXPECT_EQ(run_with_maps(40, free_).state, CycleState::kMoving) << "no acknowledgement needed";
 }
 
+// The held map's speed limit (the protective separation's) caps the speed scale: the robot slows
+// to it on a free map and keeps moving, stops at 0, and speeds up again with a map without one.
+// A slow-down it decides names no joint or cell of the look-ahead.
+TEST_F(SafetyCycleTest, TheMapsSpeedLimitCapsTheSpeedScale) {
+  open_session();
+  ASSERT_EQ(run_with_maps(40, free_).state, CycleState::kMoving);
+  const double full_rad_s = robot_.read().velocity_rad_s[0];
+  ASSERT_NEAR(full_rad_s, planned_[0], 1e-9);
+
+  coprocessor_.set_speed_reduction_permille(750);
+  const CycleReport slowed = run_with_maps(40, free_);
+  EXPECT_EQ(slowed.state, CycleState::kSlowed);
+  EXPECT_TRUE(slowed.separation_decides);
+  EXPECT_DOUBLE_EQ(slowed.separation_limit, 0.25);
+  EXPECT_DOUBLE_EQ(slowed.speed_scale, 0.25);
+  EXPECT_NEAR(robot_.read().velocity_rad_s[0], 0.25 * full_rad_s, 1e-9);
+  EXPECT_TRUE(robot_.moving());
+
+  coprocessor_.set_speed_reduction_permille(1000);
+  const CycleReport stopped = run_with_maps(40, free_);
+  EXPECT_EQ(stopped.state, CycleState::kStopped);
+  EXPECT_EQ(stopped.stop_category, StopCategory::kCategory2);
+  EXPECT_EQ(stopped.fault, CycleFault::kNone);
+  EXPECT_FALSE(robot_.moving());
+
+  coprocessor_.set_speed_reduction_permille(0);
+  const CycleReport again = run_with_maps(80, free_);
+  EXPECT_EQ(again.state, CycleState::kMoving);
+  EXPECT_FALSE(again.separation_decides);
+  EXPECT_NEAR(robot_.read().velocity_rad_s[0], full_rad_s, 1e-9);
+}
+
 class SafetyCycleLookAheadOffTest : public SafetyCycleTest {
  protected:
   SafetyCycleLookAheadOffTest() : SafetyCycleTest(1, true) {}

@@ -59,6 +59,9 @@ class ScriptedCoprocessor {
     EXPECT_EQ(frames.size(), 1U) << "the test's grid is too large for an update in one frame";
     return frames.front();
   }
+  void set_speed_reduction_permille(std::uint32_t permille) {
+    sender_.set_speed_reduction_permille(permille);
+  }
   Bytes seal_payload(const Bytes& payload, std::uint64_t capture, std::uint64_t now) {
     return sender_.seal_payload(payload.data(), payload.size(), now, capture);
   }

@@ -42,6 +42,13 @@ def map_hash_with_cameras(hash_value, healthy_cameras, camera_count):
     return hash_value ^ mix(mix(counts ^ 0x9E3779B97F4A7C15))
 
 
+def map_hash_with_speed_reduction(hash_value, reduction_permille):
+    """The chunk's hash bound to the speed reduction as well (none: unchanged)."""
+    if reduction_permille == 0:
+        return hash_value
+    return hash_value ^ mix(mix(reduction_permille ^ 0xD1B54A32D192ED03))
+
+
 VECTORS = [
     ("one free cell", set(), 1),
     ("100 cells: 0, 5..9, 99", {0, 5, 6, 7, 8, 9, 99}, 100),
@@ -56,3 +63,6 @@ if __name__ == "__main__":
     for healthy, count in [(4, 4), (3, 4), (0, 0)]:
         bound = map_hash_with_cameras(map_hash(set(), 1), healthy, count)
         print(f"one free cell, {healthy} of {count} cameras: 0x{bound:016X}")
+    for reduction in [500, 1000]:
+        bound = map_hash_with_speed_reduction(map_hash_with_cameras(map_hash(set(), 1), 4, 4), reduction)
+        print(f"one free cell, 4 of 4 cameras, speed reduced by {reduction} permille: 0x{bound:016X}")

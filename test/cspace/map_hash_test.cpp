@@ -96,5 +96,18 @@ TEST(MapHash, TheCameraCountsAreBoundIntoTheChunksHash) {
   EXPECT_EQ(map_hash_with_cameras(map_hash_with_cameras(hash, 3, 4), 3, 4), hash);
 }
 
+// And the speed reduction on top (same vectors' script); none binds nothing, so an update
+// without the field hashes as before it.
+TEST(MapHash, TheSpeedReductionIsBoundIntoTheChunksHash) {
+  const Words one(1, 0);
+  const std::uint64_t cameras = map_hash_with_cameras(map_hash(one.data(), 1), 4, 4);
+  EXPECT_EQ(map_hash_with_speed_reduction(cameras, 500), 0xE8A34DDF05D6F805ull);
+  EXPECT_EQ(map_hash_with_speed_reduction(cameras, 1000), 0x4C2E4499C32DE3B9ull);
+  EXPECT_EQ(map_hash_with_speed_reduction(cameras, 0), cameras);
+  EXPECT_EQ(map_hash_with_speed_reduction(map_hash_with_speed_reduction(cameras, 750), 750),
+            cameras);
+  EXPECT_NE(map_hash_with_speed_reduction(cameras, 750), map_hash_with_speed_reduction(cameras, 0));
+}
+
 }  // namespace
 }  // namespace safecell

@@ -66,11 +66,12 @@ pb::Message random_message(int which, std::mt19937_64& rng) {
       c.set_chunk_count(any_u32(rng));
       c.set_first_cell(any_u32(rng));
       c.set_end_cell(any_u32(rng));
-      std::string runs(rng() % 1377, '\0');
+      std::string runs(rng() % 1371, '\0');
       for (char& byte : runs) byte = static_cast<char>(rng());
       c.set_runs(runs);
       c.set_healthy_cameras(any_u32(rng));
       c.set_camera_count(any_u32(rng));
+      c.set_speed_reduction_permille(any_u32(rng));
       break;
     }
     case 3:
@@ -170,14 +171,14 @@ TEST(Interop, WhatBreaksTheControllersBoundsIsRefused) {
   for (int k = 0; k < 9; ++k) nine_joints.mutable_joint_state()->add_position_rad(k);
   EXPECT_TRUE(refused(nine_joints));
   pb::Message long_runs;
-  long_runs.mutable_map_chunk()->set_runs(std::string(1377, 'x'));
+  long_runs.mutable_map_chunk()->set_runs(std::string(1371, 'x'));
   EXPECT_TRUE(refused(long_runs));
   pb::Message long_detail;
   long_detail.mutable_fault_report()->set_detail(std::string(96, 'x'));
   EXPECT_TRUE(refused(long_detail));
   // The negative control: at the bounds, accepted.
   pb::Message at_bounds;
-  at_bounds.mutable_map_chunk()->set_runs(std::string(1376, 'x'));
+  at_bounds.mutable_map_chunk()->set_runs(std::string(1370, 'x'));
   EXPECT_FALSE(refused(at_bounds));
 }
 
@@ -193,8 +194,9 @@ TEST(Interop, TheLargestMessageFitsOneFrame) {
   chunk.set_end_cell(~0u);
   chunk.set_healthy_cameras(~0u);
   chunk.set_camera_count(~0u);
+  chunk.set_speed_reduction_permille(~0u);
   chunk.set_kind(pb::MAP_UPDATE_KIND_DELTA);
-  chunk.set_runs(std::string(1376, 'x'));
+  chunk.set_runs(std::string(1370, 'x'));
   EXPECT_LE(largest.ByteSizeLong(), kMaxPayloadBytes);
   EXPECT_EQ(largest.ByteSizeLong(), static_cast<std::size_t>(safecell_v1_Message_size));
 }

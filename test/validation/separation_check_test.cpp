@@ -32,12 +32,14 @@ class SeparationCheck : public ::testing::Test {
     return scene;
   }
 
-  static SeparationFigures figures(const SimScene& scene, bool fired) {
+  // The check's verdict: the speed it allowed (1: nothing taken off, 0: a stop) and the distance
+  // it found clear.
+  static SeparationFigures figures(const SimScene& scene, double speed_limit, double clear_m) {
     SimulatedCell sim = simulate_cell(*cell_, SensorSettings{});
     std::vector<cv::Mat> object_ids;
     (void)sim.render(scene, 1, 0.0, &object_ids);
     return check_separation(*cell_, scene, object_ids, cell_->camera_threshold, kSeparation_m,
-                            fired);
+                            speed_limit, clear_m);
   }
 
   static inline CellModel* cell_ = nullptr;
@@ -60,20 +62,26 @@ TEST_F(SeparationCheck, ANearPersonMustStopTheRobotAndAFarOneNeedNot) {
   ASSERT_NE(far_y, 0.0);
   double d = 0.0;
   const SimScene near = scene_at(0.0, near_y, d);
-  const SeparationFigures stopped = figures(near, true);
+  const SeparationFigures stopped = figures(near, 0.0, 0.0);
   EXPECT_EQ(stopped.scenes, 1U);
   EXPECT_EQ(stopped.within, 1U) << "a person " << d << " m from the robot";
   EXPECT_EQ(stopped.missed, 0U);
   EXPECT_EQ(stopped.far, 0U);
-  const SeparationFigures not_stopped = figures(near, false);
+  const SeparationFigures not_stopped = figures(near, 1.0, kSeparation_m);
   EXPECT_EQ(not_stopped.missed, 1U);  // the figure that fails validate
+  // Slowed to a speed whose distance the person is beyond: right; within it: missed.
+  const SeparationFigures slowed_enough = figures(near, 0.25, 0.15);
+  EXPECT_EQ(slowed_enough.slowed, 1U);
+  EXPECT_EQ(slowed_enough.missed, 0U) << "a person " << d << " m from the robot";
+  EXPECT_EQ(figures(near, 0.5, 0.55).missed, 1U) << "a person " << d << " m from the robot";
 
   const SimScene far = scene_at(0.0, far_y, d);
-  const SeparationFigures far_stopped = figures(far, true);
+  const SeparationFigures far_stopped = figures(far, 0.0, 0.0);
   EXPECT_EQ(far_stopped.within, 0U) << "a person " << d << " m from the robot";
   EXPECT_EQ(far_stopped.far, 1U);
   EXPECT_EQ(far_stopped.needless, 1U);
-  EXPECT_EQ(figures(far, false).needless, 0U);
+  EXPECT_EQ(figures(far, 1.0, kSeparation_m).needless, 0U);
+  EXPECT_EQ(figures(far, 0.5, 0.4).needless, 1U);  // a needless slow-down
 
   SeparationFigures sum = stopped;
   sum += far_stopped;

@@ -122,12 +122,14 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
     sample.position_rad[j] = report_.joints.position_rad[j];
     sample.velocity_rad_s[j] = report_.joints.velocity_rad_s[j];
   }
-  const std::uint8_t critical = report_.look_ahead.critical_joint;
+  // A slow-down the map's speed limit decided has no joint or cell of the look-ahead behind it.
+  const std::uint8_t critical =
+      report_.separation_decides ? kNoCriticalJoint : report_.look_ahead.critical_joint;
   MotionReport motion;
   motion.state = wire_state(report_.state);
   motion.speed_scale = report_.speed_scale;
   motion.critical_joint = critical == kNoCriticalJoint ? 0U : critical + 1U;
-  motion.has_blocking_cell = report_.look_ahead.has_blocking_cell;
+  motion.has_blocking_cell = !report_.separation_decides && report_.look_ahead.has_blocking_cell;
   motion.blocking_cell = report_.look_ahead.blocking_cell;
   link_.send_joint_state(sample, motion, now);
   watchdog_.checkpoint(CycleStep::kReport);
@@ -190,24 +192,34 @@ void SafetyCycle::command(const double* planned_rad_s, bool command_velocities) 
     return;
   }
   const LookAheadResult& look_ahead = report_.look_ahead;
-  if (look_ahead.stop()) {
+  // The held map's limit holds for as long as the map does: a newer map (or none within T_wd, a
+  // fault) replaces it. Below the look-ahead's smallest scale it is a stop like the look-ahead's.
+  report_.separation_limit = config_.look_ahead_switched_off ? 1.0 : link_.separation_speed_limit();
+  report_.separation_decides = report_.separation_limit < look_ahead.speed_scale;
+  double scale = look_ahead.speed_scale;
+  if (report_.separation_decides) {
+    scale = report_.separation_limit < config_.look_ahead.min_speed_scale
+                ? 0.0
+                : report_.separation_limit;
+  }
+  if (scale == 0.0) {
     report_.state = CycleState::kStopped;
     report_.stop_category = config_.look_ahead_stop;
     robot_.stop(config_.look_ahead_stop);
     return;
   }
-  report_.speed_scale = look_ahead.speed_scale;
-  report_.state = look_ahead.speed_scale < 1.0 ? CycleState::kSlowed : CycleState::kMoving;
+  report_.speed_scale = scale;
+  report_.state = scale < 1.0 ? CycleState::kSlowed : CycleState::kMoving;
   if (command_velocities) {
     double velocity[kMaxJoints] = {};
     for (std::uint32_t j = 0; j < grid_.joint_count(); ++j) {
-      velocity[j] = planned_rad_s[j] * look_ahead.speed_scale;
+      velocity[j] = planned_rad_s[j] * scale;
     }
     if (!robot_.command_joint_velocity(velocity, grid_.joint_count())) {
-      robot_.command_speed_scale(look_ahead.speed_scale);
+      robot_.command_speed_scale(scale);
     }
   } else {
-    robot_.command_speed_scale(look_ahead.speed_scale);
+    robot_.command_speed_scale(scale);
   }
 }
 

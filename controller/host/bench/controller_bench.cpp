@@ -53,7 +53,7 @@ namespace {
 using Words = std::vector<std::uint64_t>;
 constexpr std::uint64_t kLuts = 0x1075;
 constexpr std::uint64_t kSession = 0xBE4C;
-constexpr std::size_t kRunBytes = 1376;  // map.options: MapChunk.runs max_size
+constexpr std::size_t kRunBytes = 1370;  // map.options: MapChunk.runs max_size
 
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0.0;

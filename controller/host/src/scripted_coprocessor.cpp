@@ -47,12 +47,15 @@ std::vector<ScriptedCoprocessor::Frame> ScriptedCoprocessor::update(
                                  : safecell_v1_MapUpdateKind_MAP_UPDATE_KIND_KEYFRAME;
     chunk.map_version = version;
     chunk.base_version = base != nullptr ? base_version : 0;
-    chunk.map_hash = map_hash_with_cameras(map_hash(target, cells_), kCameras, kCameras) ^
-                     (wrong_hash ? 1U : 0U);
+    chunk.map_hash =
+        map_hash_with_speed_reduction(
+            map_hash_with_cameras(map_hash(target, cells_), kCameras, kCameras), speed_reduction_) ^
+        (wrong_hash ? 1U : 0U);
     chunk.chunk_index = static_cast<std::uint32_t>(chunks.size());
     chunk.first_cell = from;
     chunk.healthy_cameras = kCameras;
     chunk.camera_count = kCameras;
+    chunk.speed_reduction_permille = speed_reduction_;
     std::size_t size = 0;
     chunk.end_cell =
         base != nullptr

@@ -13,10 +13,12 @@ MapChunkHeader chunk_header_of(const safecell_v1_MapChunk& chunk) noexcept {
                     : MapChunkKind::kKeyframe;
   header.map_version = chunk.map_version;
   header.base_version = chunk.base_version;
-  // The hash on the link binds the chunk's camera counts (map_hash.hpp); the store checks what
-  // is left against the map it rebuilt, so a changed count is refused like a changed cell.
-  header.map_hash =
-      map_hash_with_cameras(chunk.map_hash, chunk.healthy_cameras, chunk.camera_count);
+  // The hash on the link binds the chunk's camera counts and speed reduction (map_hash.hpp); the
+  // store checks what is left against the map it rebuilt, so a changed count or reduction is
+  // refused like a changed cell.
+  header.map_hash = map_hash_with_cameras(
+      map_hash_with_speed_reduction(chunk.map_hash, chunk.speed_reduction_permille),
+      chunk.healthy_cameras, chunk.camera_count);
   header.chunk_index = chunk.chunk_index;
   header.chunk_count = chunk.chunk_count;
   header.first_cell = chunk.first_cell;
@@ -245,6 +247,7 @@ void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const F
   // The chunk's runs stay in incoming_ while the store works on them: poll() reads no frame
   // until the store has the chunk's outcome.
   update_healthy_cameras_ = chunk.healthy_cameras;
+  update_speed_reduction_permille_ = chunk.speed_reduction_permille;
   MapOffer offer = store_.accept(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size,
                                  frame.header.capture_time_ns);
   if (offer.outcome == MapOutcome::kWorking) offer = store_.work(budget_);
@@ -255,6 +258,7 @@ void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) no
   if (offer.outcome == MapOutcome::kApplied) {
     map_applied_ns_ = now_ns;
     healthy_cameras_ = update_healthy_cameras_;
+    speed_reduction_permille_ = update_speed_reduction_permille_;
     ++updates_applied_;
     return;
   }

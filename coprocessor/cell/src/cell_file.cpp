@@ -205,9 +205,15 @@ EntryConfig entry_of(const Field& field, const std::array<double, 3>& size_m) {
 
 // `defaults`: what a field left out keeps.
 SeparationDistanceConfig separation_distance_of(const Field& field,
-                                                SeparationDistanceConfig separation) {
+                                                SeparationDistanceConfig separation,
+                                                bool with_reduced_speeds = false) {
   require_mapping(field);
-  refuse_unknown_keys(field, {"approach_speed_m_s", "response_s", "stopping_s", "intrusion_m"});
+  if (with_reduced_speeds) {
+    refuse_unknown_keys(
+        field, {"approach_speed_m_s", "response_s", "stopping_s", "intrusion_m", "reduced_speeds"});
+  } else {
+    refuse_unknown_keys(field, {"approach_speed_m_s", "response_s", "stopping_s", "intrusion_m"});
+  }
   separation.at = field.at;
   // Each field is optional: absent, it keeps its default.
   const auto read = [&field](const char* key, double& value, double lo, double hi,
@@ -222,6 +228,27 @@ SeparationDistanceConfig separation_distance_of(const Field& field,
   read("stopping_s", separation.stopping_s, 0.05, 5.0, "0.05 .. 5 s (measure it on the robot)");
   read("intrusion_m", separation.intrusion_m, 0.0, 2.0, "0 .. 2 m");
   return separation;
+}
+
+// protective_separation.reduced_speeds: up to four fractions of the top speed, descending.
+std::vector<double> reduced_speeds_of(const Field& field) {
+  constexpr std::size_t kMaxLevels = 4;  // each level is one more check per frame near someone
+  if (!field.node.IsSequence() || field.node.size() > kMaxLevels) {
+    throw_cell_error(field.at, field.path,
+                     "expected a list of at most 4 speeds (fractions of the top speed), got " +
+                         shown(field.node));
+  }
+  std::vector<double> speeds;
+  for (std::size_t i = 0; i < field.node.size(); ++i) {
+    const Field speed = element(field, i);
+    speeds.push_back(bounded_of(speed, kMinReducedSpeed, kMaxReducedSpeed,
+                                "0.05 .. 0.95 (a fraction of the top speed)"));
+    if (i > 0 && speeds[i] >= speeds[i - 1]) {
+      throw_cell_error(speed.at, speed.path,
+                       "value " + speed.node.Scalar() + ", expected less than the speed before it");
+    }
+  }
+  return speeds;
 }
 
 // A camera's source: exactly one of device, video, folder, gstreamer, url.
@@ -423,12 +450,15 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
         throw_cell_error(separation.at, "protective_separation",
                          "value '" + separation.node.Scalar() +
                              "', expected off or a mapping of approach_speed_m_s, response_s, "
-                             "stopping_s, intrusion_m");
+                             "stopping_s, intrusion_m, reduced_speeds");
       }
       cell.protective_separation.reset();
     } else {
       cell.protective_separation =
-          separation_distance_of(separation, default_protective_separation());
+          separation_distance_of(separation, default_protective_separation(), true);
+      if (separation.node["reduced_speeds"]) {
+        cell.protective_reduced_speeds = reduced_speeds_of(require(separation, "reduced_speeds"));
+      }
       const double s = separation_distance_m(*cell.protective_separation);
       if (s > kMaxProtectiveSeparation_m) {
         std::ostringstream value;

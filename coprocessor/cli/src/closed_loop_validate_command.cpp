@@ -61,6 +61,7 @@ struct Totals {
   std::size_t frames = 0;
   std::size_t all_forbidden_frames = 0;
   std::map<std::string, std::size_t> all_forbidden_because;
+  std::size_t separation_slowed_frames = 0;
   std::size_t tasks_completed = 0;
   std::size_t compared = 0;  // scenarios whose task and baseline both completed
   double task_time_s = 0.0;  // sums over the compared scenarios
@@ -83,6 +84,7 @@ struct Totals {
     frames += r.frames;
     all_forbidden_frames += r.all_forbidden_frames;
     for (const auto& [why, count] : r.all_forbidden_because) all_forbidden_because[why] += count;
+    separation_slowed_frames += r.separation_slowed_frames;
     simulated_s += r.simulated_s;
     controller_cycles += r.controller_cycles;
     if (r.task_completed) ++tasks_completed;
@@ -119,6 +121,7 @@ nlohmann::json totals_json(const Totals& t) {
   json["frames"] = t.frames;
   json["all_forbidden_frames"] = t.all_forbidden_frames;
   json["all_forbidden_because"] = t.all_forbidden_because;
+  json["separation_slowed_frames"] = t.separation_slowed_frames;
   json["tasks_completed"] = t.tasks_completed;
   json["tasks_compared"] = t.compared;
   json["task_time_with_people_mean_s"] = t.mean_task_time_s();
@@ -147,6 +150,7 @@ nlohmann::json row_json(const ScenarioRow& row) {
   json["slowdowns"] = r.states.slowdowns;
   json["faults"] = r.states.faults;
   json["all_forbidden_frames"] = r.all_forbidden_frames;
+  json["separation_slowed_frames"] = r.separation_slowed_frames;
   json["outcome"] = r.outcome;
   json["task_time_s"] = r.task_time_s;
   json["task_time_without_people_s"] = row.baseline ? row.baseline->task_time_s : 0.0;
@@ -194,6 +198,8 @@ void print_text(const ClosedLoopValidateOptions& options, const std::vector<Scen
   for (const auto& [why, count] : all.all_forbidden_because) {
     out << "  all-forbidden because " << why << ": " << count << " frames\n";
   }
+  out << "frames slowed by the protective separation (not stopped): "
+      << grouped(all.separation_slowed_frames) << "\n";
   for (const ScenarioRow& row : rows) {
     if (row.result.contacts.contacts_while_moving == 0) continue;
     out << "  scenario " << row.scenario.index << " (" << row.scenario.kind << ", "

@@ -47,6 +47,8 @@ void add_near_person_figures(const SimulatedSensing& sensing, const SimScene& sc
   const auto cells = static_cast<double>(sensing.grid.cell_count());
   ++figures.frames;
   figures.separation_frames += separation ? 1 : 0;
+  figures.slowed_frames += !separation && cycle.speed_limit < 1.0 ? 1 : 0;
+  figures.speed_limit_sum += cycle.speed_limit;
   figures.map_free_sum +=
       1.0 - static_cast<double>(sensing.pipeline.fusion().forbidden().count()) / cells;
   figures.sent_free_sum += 1.0 - static_cast<double>(cycle.forbidden_cells) / cells;

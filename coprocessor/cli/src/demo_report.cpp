@@ -96,6 +96,8 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
   summary["moves_completed"] = task.moves_completed;
   summary["near_person_frames"] = run.near_person.frames;
   summary["near_person_separation_frames"] = run.near_person.separation_frames;
+  summary["near_person_slowed_frames"] = run.near_person.slowed_frames;
+  summary["near_person_mean_speed_limit"] = run.near_person.mean_speed_limit();
   summary["near_person_map_free_share"] = run.near_person.map_free_share();
   summary["near_person_sent_free_share"] = run.near_person.sent_free_share();
   summary["task_time_s"] = task.move_time_s;
@@ -160,7 +162,9 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
            share_text(run.near_person.sent_free_share()) + " over " +
            std::to_string(run.near_person.frames) + " frames (" +
            std::to_string(run.near_person.separation_frames) +
-           " forbidden whole by the protective separation)"},
+           " forbidden whole by the protective separation, " +
+           std::to_string(run.near_person.slowed_frames) + " slowed by it; mean speed limit " +
+           share_text(run.near_person.mean_speed_limit()) + ")"},
   };
   // The first few explanations, as the log shows them (all of them are in summary.json).
   for (std::size_t k = 0; k < run.stop_explanations.size() && k < 5; ++k) {
@@ -203,7 +207,9 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
       << " frames: the map left " << share_text(run.near_person.map_free_share())
       << " of the C-space free, the maps sent " << share_text(run.near_person.sent_free_share())
       << " (" << run.near_person.separation_frames
-      << " forbidden whole by the protective separation)\n"
+      << " forbidden whole by the protective separation, " << run.near_person.slowed_frames
+      << " slowed by it; mean speed limit " << share_text(run.near_person.mean_speed_limit())
+      << ")\n"
       << "  latency exposure -> map in the controller: p50 "
       << fixed(percentile(states.latency_ms, 0.5), 1) << " ms, p99 "
       << fixed(percentile(states.latency_ms, 0.99), 1) << " ms; fusion p99 "

@@ -42,6 +42,8 @@ struct NearPersonFreeSpace {
   static constexpr double kNear_m = 1.0;
   std::size_t frames = 0;
   std::size_t separation_frames = 0;  // of them, maps the protective separation forbade whole
+  std::size_t slowed_frames = 0;      // maps sent with its reduced speed (not forbidden whole)
+  double speed_limit_sum = 0.0;       // the speed limit sent (1: none, 0: a stop), summed
   double map_free_sum = 0.0;          // the fused map's free share, summed over the frames
   double sent_free_sum = 0.0;         // the sent map's
 
@@ -50,6 +52,9 @@ struct NearPersonFreeSpace {
   }
   [[nodiscard]] double sent_free_share() const {
     return frames == 0 ? 0.0 : sent_free_sum / static_cast<double>(frames);
+  }
+  [[nodiscard]] double mean_speed_limit() const {
+    return frames == 0 ? 0.0 : speed_limit_sum / static_cast<double>(frames);
   }
 };
 

@@ -192,10 +192,11 @@ Clock::time_point steady_time_point(double seconds) {
 struct RunFigures {
   std::size_t cycles = 0;
   std::size_t all_forbidden_cycles = 0;
-  std::size_t cycles_short_of_views = 0;  // fewer known views than the camera threshold
-  std::size_t incidents = 0;              // folders the incident recorder wrote
-  std::size_t new_sessions = 0;           // opened after the controller fell silent
-  std::size_t stops_explained = 0;        // slow-downs and stops the service explained
+  std::size_t separation_slowed_cycles = 0;  // maps sent with a speed limit, not forbidden whole
+  std::size_t cycles_short_of_views = 0;     // fewer known views than the camera threshold
+  std::size_t incidents = 0;                 // folders the incident recorder wrote
+  std::size_t new_sessions = 0;              // opened after the controller fell silent
+  std::size_t stops_explained = 0;           // slow-downs and stops the service explained
   std::map<std::string, std::size_t> all_forbidden_because;  // cycles per reason
   std::vector<double> features_ms;
   std::vector<double> fusion_ms;
@@ -208,6 +209,7 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
   summary["seconds"] = seconds;
   summary["all_forbidden_cycles"] = figures.all_forbidden_cycles;
   summary["all_forbidden_because"] = figures.all_forbidden_because;
+  summary["separation_slowed_cycles"] = figures.separation_slowed_cycles;
   summary["cycles_short_of_views"] = figures.cycles_short_of_views;
   summary["features_ms_p99"] = percentile(figures.features_ms, 0.99);
   summary["fusion_ms_p99"] = percentile(figures.fusion_ms, 0.99);
@@ -356,6 +358,8 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
     if (!cycle.all_forbidden.empty()) {
       ++figures.all_forbidden_cycles;
       ++figures.all_forbidden_because[all_forbidden_kind(cycle.all_forbidden)];
+    } else if (cycle.speed_limit < 1.0) {
+      ++figures.separation_slowed_cycles;
     }
     if (cycle.known_views < service_settings.camera_threshold) ++figures.cycles_short_of_views;
     figures.features_ms.push_back(cycle.times.features_ms);
@@ -393,7 +397,8 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       << (asked ? "; the controller was asked to stop the robot\n"
                 : "; no session was open to ask the controller (its watchdog holds the robot)\n")
       << "cycles " << figures.cycles << " in " << fixed(seconds, 1) << " s, all-forbidden "
-      << figures.all_forbidden_cycles << ", short of views " << figures.cycles_short_of_views
+      << figures.all_forbidden_cycles << ", slowed by the protective separation "
+      << figures.separation_slowed_cycles << ", short of views " << figures.cycles_short_of_views
       << "; summary " << (out_dir / "run_summary.json").string() << '\n';
   return 0;
 }

@@ -25,6 +25,7 @@ std::string service_status_line(std::size_t index, double time_s, const ServiceC
   }
   status += "  latency " + (last_latency_ms >= 0.0 ? fixed(last_latency_ms, 1) + " ms" : "-");
   if (!cycle.all_forbidden.empty()) status += "  ALL FORBIDDEN: " + cycle.all_forbidden;
+  if (!cycle.slowed_because.empty()) status += "  " + cycle.slowed_because;
   return status;
 }
 

@@ -134,10 +134,12 @@ void print_report(const ValidationRun& run, const ValidationReport& report, std:
   }
   if (report.separation.scenes > 0) {
     const SeparationFigures& separation = report.separation;
-    out << "  protective separation: stopped the robot in " << grouped(separation.fired) << " of "
-        << grouped(separation.scenes) << " scenes; a visible body within its distance in "
-        << grouped(separation.within) << ", missed " << separation.missed << "; every body "
-        << "0.5 m beyond it in " << grouped(separation.far) << ", stopped all the same "
+    out << "  protective separation: slowed the robot in " << grouped(separation.slowed)
+        << " and stopped it in " << grouped(separation.fired - separation.slowed) << " of "
+        << grouped(separation.scenes) << " scenes; a visible body within its full-speed "
+        << "distance in " << grouped(separation.within) << ", nearer than the allowed speed's "
+        << "(missed) " << separation.missed << "; every body 0.5 m beyond it in "
+        << grouped(separation.far) << ", slowed or stopped all the same "
         << percent(separation.needless_share()) << "\n";
   }
   if (run.model_error.any()) {

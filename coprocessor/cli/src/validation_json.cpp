@@ -98,6 +98,7 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["scenes_per_stratum"] = report.scenes_per_stratum;
   json["protective_separation"] = {{"scenes", report.separation.scenes},
                                    {"fired", report.separation.fired},
+                                   {"slowed", report.separation.slowed},
                                    {"within", report.separation.within},
                                    {"missed", report.separation.missed},
                                    {"far", report.separation.far},
@@ -175,6 +176,9 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
     const auto separation = field<nlohmann::json>(json, "protective_separation", source);
     report.separation.scenes = field<std::size_t>(separation, "scenes", source);
     report.separation.fired = field<std::size_t>(separation, "fired", source);
+    // Reports before the reduced speeds have no slow-downs: every firing was a stop.
+    report.separation.slowed =
+        separation.contains("slowed") ? field<std::size_t>(separation, "slowed", source) : 0;
     report.separation.within = field<std::size_t>(separation, "within", source);
     report.separation.missed = field<std::size_t>(separation, "missed", source);
     report.separation.far = field<std::size_t>(separation, "far", source);

@@ -155,6 +155,8 @@ ScenarioResult run_lockstep_scenario(LockstepParts& parts, const LockstepSetting
     if (!cycle.all_forbidden.empty()) {
       ++result.all_forbidden_frames;
       ++result.all_forbidden_because[all_forbidden_kind(cycle.all_forbidden)];
+    } else if (cycle.speed_limit < 1.0) {
+      ++result.separation_slowed_frames;
     }
   }
   result.simulated_s = seconds(sim_now_ns);

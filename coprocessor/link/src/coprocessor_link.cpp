@@ -148,9 +148,11 @@ void CoprocessorLink::send_stop_request(v1::FaultCause cause, const std::string&
 }
 
 MapUpdate CoprocessorLink::send_map(const CellSet& map, std::uint64_t capture_ns,
-                                    std::uint32_t healthy_cameras, std::uint32_t camera_count) {
+                                    std::uint32_t healthy_cameras, std::uint32_t camera_count,
+                                    std::uint32_t speed_reduction_permille) {
   if (!clock_sync_.offset()) throw std::logic_error("link: send_map before open()");
-  MapUpdate update = publisher_.publish(map, healthy_cameras, camera_count);
+  MapUpdate update =
+      publisher_.publish(map, healthy_cameras, camera_count, speed_reduction_permille);
   const std::uint64_t capture_controller_ns = clock_sync_.to_controller(capture_ns);
   v1::Message message;
   for (const v1::MapChunk& chunk : update.chunks) {

@@ -36,7 +36,13 @@ void MapPublisher::acknowledge(std::uint64_t version) {
 }
 
 MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_cameras,
-                                std::uint32_t camera_count) {
+                                std::uint32_t camera_count,
+                                std::uint32_t speed_reduction_permille) {
+  if (speed_reduction_permille > 1000) {
+    throw std::invalid_argument("map publisher: a speed reduction of " +
+                                std::to_string(speed_reduction_permille) +
+                                " permille, expected 0..1000");
+  }
   if (map.cell_count() != cell_count_) {
     throw std::invalid_argument("map publisher: a map of " + std::to_string(map.cell_count()) +
                                 " cells for a grid of " + std::to_string(cell_count_));
@@ -65,13 +71,16 @@ MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_camera
     chunk.set_kind(keyframe ? v1::MAP_UPDATE_KIND_KEYFRAME : v1::MAP_UPDATE_KIND_DELTA);
     chunk.set_map_version(update.version);
     chunk.set_base_version(keyframe ? 0 : acknowledged_);
-    chunk.set_map_hash(map_hash_with_cameras(update.hash, healthy_cameras, camera_count));
+    chunk.set_map_hash(map_hash_with_speed_reduction(
+        map_hash_with_cameras(update.hash, healthy_cameras, camera_count),
+        speed_reduction_permille));
     chunk.set_chunk_index(static_cast<std::uint32_t>(update.chunks.size() - 1));
     chunk.set_first_cell(from);
     chunk.set_end_cell(end);
     chunk.set_runs(runs.data(), size);
     chunk.set_healthy_cameras(healthy_cameras);
     chunk.set_camera_count(camera_count);
+    chunk.set_speed_reduction_permille(speed_reduction_permille);
     from = end;
   } while (from < cell_count_);
   for (auto& chunk : update.chunks) {

@@ -35,7 +35,8 @@ std::optional<ProtectiveSeparation> separation_check(const CellModel& cell, cons
   if (!widening) return std::nullopt;
   return std::optional<ProtectiveSeparation>(
       std::in_place, cell, luts.parts, ModelLutOptions{}.ball_radius_m, *widening,
-      separation_distance_m(*cell.config.protective_separation), settings.camera_threshold);
+      separation_levels(*cell.config.protective_separation, cell.config.protective_reduced_speeds),
+      settings.camera_threshold);
 }
 
 double ms_since(std::chrono::steady_clock::time_point start) {

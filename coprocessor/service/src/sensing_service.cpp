@@ -1,5 +1,6 @@
 #include "safecell/service/sensing_service.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -69,6 +70,12 @@ void SensingService::explain_stop(const ReceivedJointState& received) {
   explanations_.push_back(std::move(stop));
 }
 
+std::uint32_t speed_reduction_permille(double speed_limit) {
+  // Rounded up: the controller's limit, 1 - permille / 1000, is never above the verdict's.
+  const double reduction = std::ceil((1.0 - std::clamp(speed_limit, 0.0, 1.0)) * 1000.0);
+  return static_cast<std::uint32_t>(reduction);
+}
+
 std::string all_forbidden_kind(const std::string& reason) {
   return reason.substr(0, reason.find(':'));
 }
@@ -104,11 +111,16 @@ const ServiceCycle& SensingService::process(const FrameSet& delivered) {
         cycle.blocked_per_camera.push_back(observation.blocked.count());
       }
       cycle.obstacle_per_camera = pipeline_.fusion().counts().obstacle_pixels;
-      if (pipeline_.separation_verdict().too_close) {
+      const SeparationVerdict& separation = pipeline_.separation_verdict();
+      if (separation.too_close) {
         // Someone may be near enough to meet the robot before it could stop: stop it.
-        cycle.all_forbidden =
-            describe(pipeline_.separation_verdict(), *pipeline_.separation(), pipeline_.cell());
+        cycle.all_forbidden = describe(separation, *pipeline_.separation(), pipeline_.cell());
+        cycle.speed_limit = 0.0;  // and the speed: a stop twice over
         last_map_ = &all_forbidden_;
+      } else if (separation.speed_limit < 1.0) {
+        // Near, but the robot stops from the reduced speed before they could reach it.
+        cycle.speed_limit = separation.speed_limit;
+        cycle.slowed_because = describe(separation, *pipeline_.separation(), pipeline_.cell());
       }
     } catch (const std::out_of_range& error) {
       cycle.all_forbidden = std::string("robot outside the grid: ") + error.what();
@@ -117,7 +129,8 @@ const ServiceCycle& SensingService::process(const FrameSet& delivered) {
   cycle.forbidden_cells = last_map_->count();
   const MapUpdate update =
       link_.send_map(*last_map_, cycle.exposure_ns != 0 ? cycle.exposure_ns : steady_now_ns(),
-                     cycle.known_views, static_cast<std::uint32_t>(frames.frames.size()));
+                     cycle.known_views, static_cast<std::uint32_t>(frames.frames.size()),
+                     speed_reduction_permille(cycle.speed_limit));
   cycle.sent_ns = steady_now_ns();
   cycle.map_version = update.version;
   if (cycle.all_forbidden.empty()) {

@@ -105,7 +105,8 @@ class Worker {
     if (const ProtectiveSeparation* separation = pipeline_.separation()) {
       result.report.separation =
           check_separation(world_, placed.scene, object_ids, options_.fusion.camera_threshold,
-                           separation->separation_m(), pipeline_.separation_verdict().too_close);
+                           separation->separation_m(), pipeline_.separation_verdict().speed_limit,
+                           pipeline_.separation_verdict().clear_m);
     }
     result.report.scenes = 1;
     result.report.objects = placed.scene.objects.size();

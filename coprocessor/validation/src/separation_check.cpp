@@ -14,6 +14,7 @@ namespace safecell {
 SeparationFigures& SeparationFigures::operator+=(const SeparationFigures& other) {
   scenes += other.scenes;
   fired += other.fired;
+  slowed += other.slowed;
   within += other.within;
   missed += other.missed;
   far += other.far;
@@ -27,7 +28,7 @@ double SeparationFigures::needless_share() const {
 
 SeparationFigures check_separation(const CellModel& world, const SimScene& scene,
                                    const std::vector<cv::Mat>& object_ids, int camera_threshold,
-                                   double separation_m, bool fired) {
+                                   double separation_m, double speed_limit, double clear_m) {
   const std::vector<PlacedShape> robot = collision_shapes_at(*world.robot, scene.q);
   const std::size_t bodies = scene.humans.size() + scene.objects.size();
   double nearest_visible_m = std::numeric_limits<double>::infinity();
@@ -51,11 +52,12 @@ SeparationFigures check_separation(const CellModel& world, const SimScene& scene
   }
   SeparationFigures figures;
   figures.scenes = 1;
+  const bool fired = speed_limit < 1.0;
   figures.fired = fired ? 1 : 0;
-  if (nearest_visible_m < separation_m) {
-    figures.within = 1;
-    figures.missed = fired ? 0 : 1;
-  }
+  figures.slowed = fired && speed_limit > 0.0 ? 1 : 0;
+  figures.within = nearest_visible_m < separation_m ? 1 : 0;
+  // A stop allows no speed: nothing is missed. Otherwise the allowed speed's S must hold.
+  figures.missed = speed_limit > 0.0 && nearest_visible_m < clear_m ? 1 : 0;
   if (nearest_m >= separation_m + kClearDistance_m) {
     figures.far = 1;
     figures.needless = fired ? 1 : 0;

@@ -5,7 +5,9 @@
 //   poll link     frames in: map updates into the MapStore (one bounded slice of the work,
 //                 ControllerLinkConfig::map_work_per_poll), clock echoes, stop requests
 //   look-ahead    with the map's measured age and the measured cycle period
-//   command       stop (a category per cause), or the speed scale / joint velocities
+//   command       stop (a category per cause), or the speed scale / joint velocities: the
+//                 look-ahead's scale, capped by the held map's speed limit (the coprocessor's
+//                 protective separation: someone near the robot, ControllerLink)
 //   report        the joint state and the held map's version back to the coprocessor
 //
 // Faults stop the robot (category 1 by default) and latch until acknowledge(): the link's
@@ -39,8 +41,9 @@ struct SafetyCycleConfig {
   StopCategory look_ahead_stop = StopCategory::kCategory2;
   StopCategory fault_stop = StopCategory::kCategory1;
   // The closed-loop validation's negative control, never a product setting: the look-ahead is
-  // not run and the planned speed goes to the robot, so that the validation can show that its
-  // ground truth finds the contacts the look-ahead prevents. Faults still stop the robot.
+  // not run and the planned speed goes to the robot (the map's speed limit is not applied
+  // either), so that the validation can show that its ground truth finds the contacts the
+  // look-ahead prevents. Faults still stop the robot.
   bool look_ahead_switched_off = false;
 };
 
@@ -64,6 +67,10 @@ struct CycleReport {
   LinkBlock link_block = LinkBlock::kNone;
   WatchdogFault watchdog_fault = WatchdogFault::kNone;
   double speed_scale = 0.0;
+  // The held map's speed limit (1: none) and whether it, not the look-ahead, set the speed scale
+  // (a slow-down or stop for someone within the protective separation distance).
+  double separation_limit = 1.0;
+  bool separation_decides = false;
   StopCategory stop_category = StopCategory::kCategory2;  // when stopped, waiting or faulted
   LookAheadResult look_ahead;
   std::uint64_t map_version = 0;

@@ -108,6 +108,13 @@ class ControllerLink {
   // The capture time of the held map's data (controller clock); 0 without a map.
   std::uint64_t map_capture_ns() const noexcept { return store_.capture_ns(); }
   std::uint32_t healthy_cameras() const noexcept { return healthy_cameras_; }
+  // The speed scale the held map allows (MapChunk.speed_reduction_permille, bound into its hash):
+  // 1 without a reduction, 0 for 1000 permille or more (a stop). The cycle commands no more.
+  double separation_speed_limit() const noexcept {
+    return speed_reduction_permille_ >= 1000
+               ? 0.0
+               : 1.0 - static_cast<double>(speed_reduction_permille_) * 1e-3;
+  }
   const ErrorLatch& latch() const noexcept { return latch_; }
   const LinkFault& last_fault() const noexcept { return last_fault_; }
   MapRefusal last_map_refusal() const noexcept { return last_map_refusal_; }
@@ -148,8 +155,10 @@ class ControllerLink {
 
   std::uint64_t map_applied_ns_ = 0;
   std::uint32_t healthy_cameras_ = 0;
-  std::uint32_t update_healthy_cameras_ = 0;  // of the chunk in work in the store
-  std::uint32_t budget_ = 0;                  // this poll's work units left
+  std::uint32_t update_healthy_cameras_ = 0;           // of the chunk in work in the store
+  std::uint32_t speed_reduction_permille_ = 0;         // of the held map
+  std::uint32_t update_speed_reduction_permille_ = 0;  // of the chunk in work in the store
+  std::uint32_t budget_ = 0;                           // this poll's work units left
   MapRefusal last_map_refusal_ = MapRefusal::kNone;
   std::uint64_t updates_applied_ = 0;
   std::uint64_t updates_refused_ = 0;

@@ -132,6 +132,12 @@ inline SeparationDistanceConfig default_protective_separation() {
   return separation;
 }
 
+// The reduced speeds by default: half and a quarter of the top speed (S = 0.40 m and 0.28 m with
+// the default distance).
+inline constexpr double kMinReducedSpeed = 0.05;
+inline constexpr double kMaxReducedSpeed = 0.95;
+inline std::vector<double> default_reduced_speeds() { return {0.5, 0.25}; }
+
 struct CellConfig {
   std::string name;
   std::string source;
@@ -164,11 +170,17 @@ struct CellConfig {
   SourceLine entries_at;
   SeparationDistanceConfig entry_separation;
   // The protective separation check (protective_separation.hpp): when the cameras see someone
-  // within this distance of the robot, the whole map is forbidden. Unset (`off`): not checked.
-  // Its intrusion C defaults to 0 (the cameras see an arm reaching out, unlike an entry's
-  // boundary).
+  // within this distance of the robot, the robot slows down or stops. Unset (`off`): not
+  // checked. Its intrusion C defaults to 0 (the cameras see an arm reaching out, unlike an
+  // entry's boundary).
   std::optional<SeparationDistanceConfig> protective_separation;
   SourceLine protective_separation_at;
+  // Its reduced speeds (protective_separation.reduced_speeds), fractions of the top speed,
+  // descending, each in kReducedSpeedRange: at speed f the robot stops within f * stopping_s, so
+  // someone may come as near as S(f) = K * (t_response + f * t_stop) + C before it must slow
+  // further; nearer than the last level's S it stops (the whole map forbidden). Empty: it stops
+  // at S.
+  std::vector<double> protective_reduced_speeds = default_reduced_speeds();
 };
 
 }  // namespace safecell

@@ -58,6 +58,7 @@ struct ScenarioResult {
   std::size_t frames = 0;
   std::size_t all_forbidden_frames = 0;
   std::map<std::string, std::size_t> all_forbidden_because;  // frames per reason
+  std::size_t separation_slowed_frames = 0;  // maps sent with a speed limit below 1, not stopped
   std::string outcome;  // the controller's (task completed, task failed) or "time limit"
   bool task_completed = false;
   double task_time_s = 0.0;  // when the task ended, from the start

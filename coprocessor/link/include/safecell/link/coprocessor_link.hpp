@@ -64,9 +64,10 @@ class CoprocessorLink {
   // The joint-state handlers stay.
   void start_new_session();
 
-  // Sends this cycle's map, its data captured at `capture_ns` (coprocessor clock).
+  // Sends this cycle's map, its data captured at `capture_ns` (coprocessor clock), with the
+  // protective separation's speed reduction (MapPublisher::publish).
   MapUpdate send_map(const CellSet& map, std::uint64_t capture_ns, std::uint32_t healthy_cameras,
-                     std::uint32_t camera_count);
+                     std::uint32_t camera_count, std::uint32_t speed_reduction_permille = 0);
   // Sends one clock echo request (call now and then: drift).
   void send_clock_echo();
   // Asks the controller to stop (a clean shutdown, an operator): it holds the robot, latched,

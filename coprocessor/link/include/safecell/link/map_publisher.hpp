@@ -22,7 +22,7 @@ namespace safecell {
 struct MapPublisherSettings {
   std::size_t history = 16;                  // maps kept as possible delta bases
   std::uint32_t keyframe_after_cycles = 10;  // cycles without an acknowledgement
-  std::size_t runs_per_chunk_bytes = 1376;   // the run list of one frame (map.options)
+  std::size_t runs_per_chunk_bytes = 1370;   // the run list of one frame (map.options)
 };
 
 struct MapUpdate {
@@ -36,8 +36,11 @@ class MapPublisher {
  public:
   MapPublisher(std::uint32_t cell_count, const MapPublisherSettings& settings);
 
-  // The update for this cycle's map (which becomes version last + 1).
-  MapUpdate publish(const CellSet& map, std::uint32_t healthy_cameras, std::uint32_t camera_count);
+  // The update for this cycle's map (which becomes version last + 1), sent with the camera counts
+  // it was fused from and the protective separation's speed reduction (thousandths of the top
+  // speed; 0 none), all three bound into its hash (shared/cspace/map_hash.hpp).
+  MapUpdate publish(const CellSet& map, std::uint32_t healthy_cameras, std::uint32_t camera_count,
+                    std::uint32_t speed_reduction_permille = 0);
 
   // The controller holds `version` (from its joint stream). Versions never sent are ignored.
   void acknowledge(std::uint64_t version);

@@ -5,11 +5,20 @@
 // of it, and the robot's own cell turns forbidden only when they all but touch it - the robot is
 // then still braking when they meet (controller/SAFETY_CASE.md, "Direction").
 //
-// The check, once per map cycle at the robot's configuration at the exposure: each robot part
-// (robot_parts.hpp), its balls grown by the separation distance S and the removal's widening, is
-// projected into every camera. When, for some part, at least `camera_threshold` cameras see an
-// obstacle (after robot removal) inside that grown image, or have an unknown view, a person may
-// be within S of the part and the robot must stop: the service then forbids the whole map.
+// The check, once per map cycle at the robot's configuration at the exposure, for each level
+// (a speed f and its distance S(f), from full speed down): each robot part (robot_parts.hpp), its
+// balls grown by S(f) and the removal's widening, is projected into every camera. When, for some
+// part, at least `camera_threshold` cameras see an obstacle (after robot removal) inside that
+// grown image, or have an unknown view, a person may be within S(f) of the part. The verdict is
+// the speed of the first level whose vote is clear: the robot may go at that fraction of its top
+// speed (the service sends it with the map, the controller caps its speed scale); when every
+// level votes, the robot must stop and the service forbids the whole map.
+//
+// Why slowing is enough: from speed f the robot stops within f * t_stop (the deceleration the
+// stop holds), so someone at S(f) = K (t_response + f t_stop) + C or beyond cannot reach it
+// before it is at rest. S(f) falls at K / t_stop per unit of f, the rate at which a person
+// walking in at K eats into it, while the robot slows at 1 / t_stop per second when it brakes:
+// the slow-down keeps pace with the approach (docs/closed_loop_findings.md).
 //
 // Why it is conservative: a point within S of a part lies inside the part's grown balls, so in
 // every camera that sees the point its pixel lies inside the grown part's image - the argument of
@@ -31,21 +40,47 @@
 
 namespace safecell {
 
+// One level of the check: while no obstacle is within separation_m of the robot, it may move at
+// `speed` (a fraction of its top speed).
+struct SeparationLevel {
+  double speed = 1.0;
+  double separation_m = 0.0;
+};
+
+// The levels of a cell file's protective separation: full speed at S, then each reduced speed f
+// at S(f) = K (t_response + f t_stop) + C. Throws std::invalid_argument for speeds that are not
+// descending within (0, 1).
+[[nodiscard]] std::vector<SeparationLevel> separation_levels(
+    const SeparationDistanceConfig& distance, const std::vector<double>& reduced_speeds);
+
 struct SeparationVerdict {
-  bool too_close = false;            // some part has an obstacle within S in enough cameras
-  std::size_t part = 0;              // the first such part, when too_close
-  std::vector<std::size_t> cameras;  // the cameras that voted for it (unknown views among them)
+  // The speed the robot may keep (a fraction of its top speed): the first clear level's; 1 when
+  // nobody is within the full-speed distance, 0 when every level voted (too_close: a stop).
+  double speed_limit = 1.0;
+  bool too_close = false;
+  // The distance the check found clear of obstacles: S of the level allowed (0 for a stop).
+  double clear_m = 0.0;
+  // The last level that voted (when speed_limit < 1): its distance, the first part that voted at
+  // it and its cameras (unknown views among them).
+  double within_m = 0.0;
+  std::size_t part = 0;
+  std::vector<std::size_t> cameras;
 };
 
 class ProtectiveSeparation {
  public:
-  // widening_m: the removal's (padding and the motion within the sync error); separation_m: S.
-  // Throws std::invalid_argument for no parts, a threshold outside 1..cameras, S outside
-  // 0..0.95 m, or what ConfigurationSilhouettes refuses.
+  // widening_m: the removal's (padding and the motion within the sync error); levels: from full
+  // speed (speed 1, the largest S) down, speeds and distances descending. Throws
+  // std::invalid_argument for no parts, no levels, levels out of order, a first level that is
+  // not full speed, a threshold outside 1..cameras, S outside 0..0.95 m, or what
+  // ConfigurationSilhouettes refuses.
   ProtectiveSeparation(const CellModel& cell, std::vector<RobotPart> parts, double ball_radius_m,
-                       double widening_m, double separation_m, int camera_threshold);
+                       double widening_m, std::vector<SeparationLevel> levels,
+                       int camera_threshold);
 
-  [[nodiscard]] double separation_m() const { return separation_m_; }
+  // S at full speed.
+  [[nodiscard]] double separation_m() const { return levels_.front().separation_m; }
+  [[nodiscard]] const std::vector<SeparationLevel>& levels() const { return levels_; }
   [[nodiscard]] const std::vector<RobotPart>& parts() const { return parts_; }
 
   // The vote at joint values q (rad): `known[c]` whether camera c's view was known,
@@ -53,22 +88,29 @@ class ProtectiveSeparation {
   // std::invalid_argument for counts that are not the cameras'.
   [[nodiscard]] SeparationVerdict check(std::span<const double> q, const std::vector<bool>& known,
                                         const std::vector<const FeatureMask*>& obstacles) const;
-  // The grown image of part `part` at q in every camera (for pictures and tests).
+  // The grown image (full-speed distance) of part `part` at q in every camera (for pictures and
+  // tests).
   [[nodiscard]] std::vector<FeatureMask> grown_part(std::span<const double> q,
                                                     std::size_t part) const;
 
  private:
+  // Whether, at level `level`, some part has threshold cameras voting; fills the verdict's part
+  // and cameras when it has.
+  bool votes(std::size_t level, std::span<const double> q, const std::vector<bool>& known,
+             const std::vector<const FeatureMask*>& obstacles, SeparationVerdict& verdict) const;
+
   std::vector<RobotPart> parts_;
-  double separation_m_;
+  std::vector<SeparationLevel> levels_;
   int camera_threshold_;
   FeatureGrid grid_;
-  ConfigurationSilhouettes grown_;
+  std::vector<ConfigurationSilhouettes> grown_;  // per level
   mutable std::vector<FeatureMask> scratch_;
 };
 
-// "an obstacle within the protective separation distance: 0.64 m of the robot's upper arm
-// (links 1-2) in cameras 'cam0', 'cam2'": the reason of a map forbidden whole (its kind is the
-// text before the colon).
+// The reason of a stop (the map forbidden whole; its kind is the text before the colon):
+// "an obstacle within the protective separation distance: 0.28 m of the robot's upper arm
+// (links 1-2) in cameras 'cam0', 'cam2'". Of a slow-down: "slowed to 50 % by the protective
+// separation: an obstacle within 0.64 m of ...".
 std::string describe(const SeparationVerdict& verdict, const ProtectiveSeparation& check,
                      const CellModel& cell);
 

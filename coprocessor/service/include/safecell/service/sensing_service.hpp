@@ -44,6 +44,10 @@ struct ServiceCycle {
   bool pose_known = false;
   std::vector<double> q;      // the robot at the exposure, when known
   std::string all_forbidden;  // why the whole map was forbidden this cycle; empty: it was not
+  // The speed the map was sent with (a fraction of the top speed, MapChunk's reduction) and why
+  // it is below 1: someone within the protective separation distance at full speed.
+  double speed_limit = 1.0;
+  std::string slowed_because;
   std::uint32_t known_views = 0;
   std::vector<std::size_t> blocked_per_camera;   // blocked feature cells
   std::vector<std::size_t> obstacle_per_camera;  // after robot removal
@@ -111,6 +115,9 @@ class SensingService {
 
   void explain_stop(const ReceivedJointState& received);
 };
+
+// MapChunk.speed_reduction_permille for a speed limit (a fraction of the top speed, 0..1).
+std::uint32_t speed_reduction_permille(double speed_limit);
 
 // The kind of a reason the whole map was forbidden (ServiceCycle::all_forbidden): its text before
 // the first colon ("robot pose unknown", "an obstacle within the protective separation

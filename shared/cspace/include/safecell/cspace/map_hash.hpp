@@ -51,6 +51,16 @@ constexpr std::uint64_t map_hash_with_cameras(std::uint64_t hash, std::uint32_t 
   const std::uint64_t counts = (std::uint64_t{healthy_cameras} << 32) | camera_count;
   return hash ^ map_hash_mix(map_hash_mix(counts ^ 0x9E3779B97F4A7C15ull));
 }
+// The binding of the speed reduction a map is sent with (MapChunk.speed_reduction_permille), on
+// top of the cameras': a fault that turns a reduced map into a full-speed one is refused like a
+// changed cell. XOR with a mixed key again, so the same call takes it off. No reduction binds
+// nothing: an update without the field hashes as it did before the field.
+constexpr std::uint64_t map_hash_with_speed_reduction(std::uint64_t hash,
+                                                      std::uint32_t reduction_permille) noexcept {
+  if (reduction_permille == 0) return hash;
+  return hash ^
+         map_hash_mix(map_hash_mix(std::uint64_t{reduction_permille} ^ 0xD1B54A32D192ED03ull));
+}
 // The map hash from the XOR of all its block hashes.
 constexpr std::uint64_t map_hash_from_combined(std::uint64_t combined_block_hashes,
                                                CellIndex cell_count) noexcept {

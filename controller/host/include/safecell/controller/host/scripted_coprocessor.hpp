@@ -32,6 +32,10 @@ class ScriptedCoprocessor {
                             std::uint64_t capture_ns, std::uint64_t now_ns, bool wrong_hash = false,
                             std::size_t run_bytes = kMaxRunBytes);
 
+  // The speed reduction (MapChunk.speed_reduction_permille) the updates from now on carry, bound
+  // into their hash as the coprocessor binds it. 0 (none) at the start.
+  void set_speed_reduction_permille(std::uint32_t permille) { speed_reduction_ = permille; }
+
   // A payload of the caller's own making (a hostile or future sender's message), sealed as the
   // next data frame.
   Frame seal_payload(const std::uint8_t* payload, std::size_t size, std::uint64_t now_ns,
@@ -46,6 +50,7 @@ class ScriptedCoprocessor {
   std::uint64_t lut_;
   std::uint64_t session_;
   CellIndex cells_;
+  std::uint32_t speed_reduction_ = 0;
   FrameSealer sealer_;
   safecell_v1_Message message_{};
 };
