@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <map>
@@ -118,6 +119,11 @@ class ControllerSide {
     const std::lock_guard lock(mutex_);
     return taken_;
   }
+  // The speed limit each taken map came with.
+  std::map<std::uint64_t, double> limits() const {
+    const std::lock_guard lock(mutex_);
+    return limits_;
+  }
   // Read after stop().
   const ControllerLink& link() const { return link_; }
   const NaiveReceiver& naive() const { return naive_; }
@@ -141,6 +147,7 @@ class ControllerSide {
         Words words(cell_bits::words_for(cells_));
         store_.store().view().copy_dense(words.data());
         taken_[held] = std::move(words);
+        limits_[held] = link_.separation_speed_limit();
       }
       if (now() >= next_joint_state) {
         JointSample joints;
@@ -164,6 +171,7 @@ class ControllerSide {
   std::atomic<unsigned> seen_blocks_{0};
   mutable std::mutex mutex_;
   std::map<std::uint64_t, Words> taken_;
+  std::map<std::uint64_t, double> limits_;
 };
 
 struct FaultClass {
@@ -279,9 +287,12 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
   ASSERT_TRUE(opened);
 
   std::map<std::uint64_t, CellSet> sent;
+  std::map<std::uint64_t, double> sent_limits;  // the speed limit of each (none, half, quarter)
   for (const CellSet& map : demo.maps) {
-    const MapUpdate update = link.send_map(map, steady_ns(), 4, 4);
+    const std::uint32_t reduction = std::array<std::uint32_t, 3>{0, 500, 750}[sent.size() % 3];
+    const MapUpdate update = link.send_map(map, steady_ns(), 4, 4, reduction);
     sent.emplace(update.version, map);
+    sent_limits.emplace(update.version, 1.0 - reduction * 1e-3);
     link.poll(10ms);
     if (update.version % 10 == 0) link.send_clock_echo();
   }
@@ -310,6 +321,11 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
   }
   RecordProperty("proxy", proxy.report_json());
   EXPECT_EQ(wrong, 0u) << "maps taken that differ from the one sent with their version";
+  for (const auto& [version, limit] : controller.limits()) {
+    const auto original = sent_limits.find(version);  // a version never sent: counted above
+    if (original == sent_limits.end()) continue;
+    EXPECT_EQ(limit, original->second) << "the speed limit taken with version " << version;
+  }
   // Liveness: most updates get through (the link repairs after every fault).
   EXPECT_GE(taken.size(), demo.maps.size() / 3)
       << "the controller took " << taken.size() << " of " << demo.maps.size() << " updates; "

@@ -118,6 +118,25 @@ std::vector<Golden> golden_messages() {
     m.mutable_fault_report()->set_detail("hash mismatch");
     all.push_back({"fault_report", m});
   }
+  {
+    // Added with MapChunk.speed_reduction_permille (field 12): a map sent with the robot slowed to
+    // half its top speed by the protective separation.
+    pb::Message m;
+    auto& c = *m.mutable_map_chunk();
+    c.set_kind(pb::MAP_UPDATE_KIND_DELTA);
+    c.set_map_version(13);
+    c.set_base_version(12);
+    c.set_map_hash(0x5C1D0A7E3B9F2468ull);
+    c.set_chunk_index(0);
+    c.set_chunk_count(1);
+    c.set_first_cell(0);
+    c.set_end_cell(100);
+    c.set_runs(std::string("\x00\x03\x04\x0B\x59\x03", 6));
+    c.set_healthy_cameras(4);
+    c.set_camera_count(4);
+    c.set_speed_reduction_permille(500);
+    all.push_back({"map_chunk_slowed", m});
+  }
   return all;
 }
 
@@ -172,6 +191,11 @@ TEST(GoldenFrames, EveryGoldenFrameOpensAndDecodesOnBothSides) {
         << golden.name;
     EXPECT_EQ(controller_side.which_body, static_cast<pb_size_t>(golden.message.body_case()))
         << golden.name;
+    if (golden.message.has_map_chunk()) {
+      EXPECT_EQ(controller_side.body.map_chunk.speed_reduction_permille,
+                golden.message.map_chunk().speed_reduction_permille())
+          << golden.name;
+    }
     // The coprocessor's side.
     pb::Message coprocessor_side;
     ASSERT_TRUE(coprocessor_side.ParseFromArray(opened.value().payload,

@@ -36,8 +36,7 @@ Clock::duration seconds(double s) {
 
 ControllerSetup campaign_controller_setup(const CampaignSensing& sensing, const DemoWorld& world,
                                           const CampaignSettings& settings) {
-  ControllerSetup setup;
-  setup.joints = comfortable_joint_limits(*sensing.cell.robot, sensing.grid);
+  ControllerSetup setup = controller_setup_of(sensing.cell, sensing.grid);
   setup.start_rad = world.start_rad();
   setup.goals_rad = world.goals_rad();
   setup.repeat = true;
@@ -46,7 +45,6 @@ ControllerSetup campaign_controller_setup(const CampaignSensing& sensing, const 
                             : kLinkLimits_ms;
   setup.watchdog_ms = limits;
   setup.max_data_age_ms = limits;
-  setup.min_healthy_cameras = static_cast<std::uint32_t>(sensing.cell.camera_threshold);
   return setup;
 }
 

@@ -23,10 +23,8 @@ void run_controller_config(const ControllerConfigOptions& options, std::ostream&
   const CspaceGrid grid = make_grid(cell.config);
   const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
 
-  ControllerSetup setup;
-  setup.joints = comfortable_joint_limits(*cell.robot, grid);
+  ControllerSetup setup = controller_setup_of(cell, grid);
   setup.start_rad = inside_grid(grid, std::vector<double>(grid.joint_count(), 0.0));
-  setup.min_healthy_cameras = static_cast<std::uint32_t>(cell.camera_threshold);
   setup.listen_address = listen.address;
   setup.listen_port = listen.port;
   setup.coprocessor_address = coprocessor.address;

@@ -20,6 +20,7 @@
 #include "safecell/closed_loop/live_simulated_cameras.hpp"
 #include "safecell/files/read_file.hpp"
 #include "safecell/robot/kinematics.hpp"
+#include "safecell/separation/protective_separation.hpp"
 #include "safecell/sim/ground_truth.hpp"
 #include "safecell/validation/configuration_strata.hpp"
 #include "safecell/validation/scene_check.hpp"
@@ -35,9 +36,7 @@ namespace {
 // want of the robot's pose).
 void add_near_person_figures(const SimulatedSensing& sensing, const SimScene& scene,
                              const ServiceCycle& cycle, NearPersonFreeSpace& figures) {
-  const bool separation = all_forbidden_kind(cycle.all_forbidden) ==
-                          "an obstacle within the protective separation "
-                          "distance";
+  const bool separation = all_forbidden_kind(cycle.all_forbidden) == kSeparationStopKind;
   if (scene.humans.empty() || !cycle.pose_known || (!cycle.all_forbidden.empty() && !separation)) {
     return;
   }
@@ -61,14 +60,12 @@ constexpr double kWatchdog_ms = 250.0;  // a few frame periods: a late frame is 
 
 ControllerSetup demo_controller_setup(const CellModel& cell, const CspaceGrid& grid,
                                       const DemoWorld& world) {
-  ControllerSetup setup;
-  setup.joints = comfortable_joint_limits(*cell.robot, grid);
+  ControllerSetup setup = controller_setup_of(cell, grid);
   setup.start_rad = world.start_rad();
   setup.goals_rad = world.goals_rad();
   setup.repeat = true;
   setup.watchdog_ms = kWatchdog_ms;
   setup.max_data_age_ms = kWatchdog_ms;
-  setup.min_healthy_cameras = static_cast<std::uint32_t>(cell.camera_threshold);
   return setup;
 }
 

@@ -52,10 +52,8 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
   // and in the protective_separation benchmark.
   SimulatedSensing sensing("", "", 1, log, CellOverrides{0, true});
   const ScratchFolder folder;
-  ControllerSetup setup;
-  setup.joints = comfortable_joint_limits(*sensing.cell.robot, sensing.grid);
+  ControllerSetup setup = controller_setup_of(sensing.cell, sensing.grid);
   setup.start_rad = demo_robot_at(sensing.grid, 0.0);  // held there: no task
-  setup.min_healthy_cameras = static_cast<std::uint32_t>(sensing.cell.camera_threshold);
   ControllerSession session(
       sensing.cell, sensing.grid, sensing.pipeline, sensing.luts.set.fingerprint, setup,
       real_time_session(program, folder.path, kFps, sensing.fusion.sync_error_s,

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "safecell/cell/cell_error.hpp"
+
 namespace safecell {
 namespace {
 
@@ -37,6 +39,46 @@ std::vector<SimulatedJointLimits> comfortable_joint_limits(const RobotModel& rob
     limits.push_back({urdf > 0.0 ? std::min(urdf, pace) : pace, accel, accel});
   }
   return limits;
+}
+
+double stop_time_from_top_speed_s(const ControllerSetup& setup) {
+  double braking_s = 0.0;
+  for (const SimulatedJointLimits& joint : setup.joints) {
+    braking_s = std::max(braking_s, joint.max_speed_rad_s / joint.decel_rad_s2);
+  }
+  return setup.actuation_ms * 1e-3 + braking_s;
+}
+
+namespace {
+
+// The cell's stopping time for a separation distance must cover the robot's stop.
+void require_stop_within(const SeparationDistanceConfig& separation, const std::string& field,
+                         const CellConfig& cell, double stop_s) {
+  if (separation.stopping_s >= stop_s) return;
+  SourceLine where = separation.at;
+  const bool defaulted = where.source.empty();
+  if (defaulted) where.source = cell.source;
+  std::ostringstream problem;
+  problem << "value " << separation.stopping_s << " s" << (defaulted ? " (the default)" : "")
+          << ", expected at least " << stop_s << " s: the simulated robot stops from its top "
+          << "speed in that long, so the separation distance would be too small";
+  throw_cell_error(where, field + ".stopping_s", problem.str());
+}
+
+}  // namespace
+
+ControllerSetup controller_setup_of(const CellModel& cell, const CspaceGrid& grid) {
+  if (!cell.robot) throw std::invalid_argument("controller setup: the cell has no robot model");
+  ControllerSetup setup;
+  setup.joints = comfortable_joint_limits(*cell.robot, grid);
+  setup.min_healthy_cameras = static_cast<std::uint32_t>(cell.camera_threshold);
+  const double stop_s = stop_time_from_top_speed_s(setup);
+  require_stop_within(cell.config.entry_separation, "entry_separation", cell.config, stop_s);
+  if (cell.config.protective_separation) {
+    require_stop_within(*cell.config.protective_separation, "protective_separation", cell.config,
+                        stop_s);
+  }
+  return setup;
 }
 
 std::vector<double> inside_grid(const CspaceGrid& grid, std::vector<double> q) {

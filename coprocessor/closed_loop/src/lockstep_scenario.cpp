@@ -26,13 +26,11 @@ v1::ControllerState wire_state(const std::string& name) {
 
 ControllerSetup scenario_setup(const LockstepParts& parts, const LockstepSettings& settings,
                                const RobotTask& task) {
-  ControllerSetup setup;
-  setup.joints = comfortable_joint_limits(*parts.cell.robot, parts.grid);
+  ControllerSetup setup = controller_setup_of(parts.cell, parts.grid);
   setup.start_rad = task.start_rad;
   setup.goals_rad = task.goals_rad;
   setup.repeat = false;
   setup.program_motion = task.program_motion;
-  setup.min_healthy_cameras = static_cast<std::uint32_t>(parts.cell.camera_threshold);
   setup.test_only_look_ahead_off = settings.look_ahead_off;
   return setup;
 }

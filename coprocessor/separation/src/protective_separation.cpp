@@ -123,7 +123,7 @@ std::string describe(const SeparationVerdict& verdict, const ProtectiveSeparatio
   text.precision(2);
   text << std::fixed;
   if (verdict.too_close) {
-    text << "an obstacle within the protective separation distance: ";
+    text << kSeparationStopKind << ": ";
   } else {
     text << "slowed to " << std::lround(verdict.speed_limit * 100.0)
          << " % by the protective separation: an obstacle within ";

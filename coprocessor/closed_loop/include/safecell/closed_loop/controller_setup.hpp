@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "safecell/cell/cell_model.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/errors/input_error.hpp"
 #include "safecell/robot/robot_model.hpp"
@@ -66,6 +67,16 @@ std::vector<double> inside_grid(const CspaceGrid& grid, std::vector<double> q);
 // wrist), and the order of acceleration of a data sheet (4 and 8 rad/s^2).
 std::vector<SimulatedJointLimits> comfortable_joint_limits(const RobotModel& robot,
                                                            const CspaceGrid& grid);
+
+// The longest stop of the simulated robot from its top speed, in seconds: the actuation delay
+// and the slowest joint's braking (its top speed over its deceleration).
+[[nodiscard]] double stop_time_from_top_speed_s(const ControllerSetup& setup);
+
+// The controller setup of a cell: the comfortable joint limits and the cell's camera threshold.
+// Throws CellError naming the field when a stopping time in the cell file (entry_separation's,
+// protective_separation's) is shorter than that robot's stop from its top speed: the separation
+// distances would be too small for it.
+[[nodiscard]] ControllerSetup controller_setup_of(const CellModel& cell, const CspaceGrid& grid);
 
 // The YAML text of controller.example.yaml's shape. Numbers are written with 17 significant
 // digits, so the controller reads back the very doubles (and the grid's fingerprint) given here.

@@ -107,6 +107,11 @@ class ProtectiveSeparation {
   mutable std::vector<FeatureMask> scratch_;
 };
 
+// The kind of a stop's reason (ServiceCycle::all_forbidden's text before its colon): what the
+// run's, the demo's and the closed loop's counts group by.
+inline constexpr const char* kSeparationStopKind =
+    "an obstacle within the protective separation distance";
+
 // The reason of a stop (the map forbidden whole; its kind is the text before the colon):
 // "an obstacle within the protective separation distance: 0.28 m of the robot's upper arm
 // (links 1-2) in cameras 'cam0', 'cam2'". Of a slow-down: "slowed to 50 % by the protective
