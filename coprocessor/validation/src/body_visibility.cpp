@@ -63,6 +63,17 @@ FeatureMask front_most_cells(const cv::Mat& object_ids, BodyCode body, const Fea
                            [&](int x, int y) { return object_ids.at<BodyCode>(y, x) == body; });
 }
 
+std::vector<bool> visible_per_camera(const std::vector<cv::Mat>& object_ids, BodyCode body,
+                                     const FeatureGrid& grid) {
+  std::vector<bool> visible;
+  for (const cv::Mat& ids : object_ids) visible.push_back(front_most_cells(ids, body, grid).any());
+  return visible;
+}
+
+BodyCode scene_body_code(std::size_t humans, std::size_t b) {
+  return b < humans ? body_code(BodyKind::kHuman, b) : body_code(BodyKind::kObject, b - humans);
+}
+
 FeatureMask covered_cells(const cv::Mat& coverage, const FeatureGrid& grid) {
   check_size(coverage, CV_8UC1, grid, "coverage image");
   return half_filled_cells(grid,

@@ -36,13 +36,9 @@ std::vector<CheckedBody> check_bodies(const CellModel& cell, SimulatedCell& sim,
   std::vector<CheckedBody> bodies;
   for (std::size_t b = 0; b < scene.humans.size() + scene.objects.size(); ++b) {
     CheckedBody body;
-    body.code = b < scene.humans.size() ? body_code(BodyKind::kHuman, b)
-                                        : body_code(BodyKind::kObject, b - scene.humans.size());
-    std::vector<bool> visible(sim.camera_count());
-    for (std::size_t c = 0; c < sim.camera_count(); ++c) {
-      visible[c] = front_most_cells(object_ids.at(c), body.code, cell.feature_grid).any();
-      body.cameras_visible += visible[c] ? 1 : 0;
-    }
+    body.code = scene_body_code(scene.humans.size(), b);
+    const std::vector<bool> visible = visible_per_camera(object_ids, body.code, cell.feature_grid);
+    body.cameras_visible = static_cast<int>(std::count(visible.begin(), visible.end(), true));
     if (body.cameras_visible < threshold) {
       std::vector<SurfaceMesh> own;
       for (const auto& surface : surfaces) {

@@ -1,9 +1,9 @@
 #include "safecell/validation/separation_check.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "safecell/robot/kinematics.hpp"
-#include "safecell/sim/body_id.hpp"
 #include "safecell/sim/ground_truth.hpp"
 #include "safecell/sim/human_figure.hpp"
 #include "safecell/validation/body_visibility.hpp"
@@ -39,12 +39,9 @@ SeparationFigures check_separation(const CellModel& world, const SimScene& scene
         human ? human_shapes(scene.humans[b])
               : std::vector<PlacedShape>{scene.objects[b - scene.humans.size()]};
     const double distance_m = GroundTruth(shapes).min_distance_m(robot);
-    const BodyCode code = human ? body_code(BodyKind::kHuman, b)
-                                : body_code(BodyKind::kObject, b - scene.humans.size());
-    int cameras_visible = 0;
-    for (const cv::Mat& ids : object_ids) {
-      cameras_visible += front_most_cells(ids, code, world.feature_grid).any() ? 1 : 0;
-    }
+    const std::vector<bool> visible =
+        visible_per_camera(object_ids, scene_body_code(scene.humans.size(), b), world.feature_grid);
+    const auto cameras_visible = std::count(visible.begin(), visible.end(), true);
     nearest_m = std::min(nearest_m, distance_m);
     if (cameras_visible >= camera_threshold) {
       nearest_visible_m = std::min(nearest_visible_m, distance_m);

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <vector>
 
 #include "safecell/camera/feature_grid.hpp"
 #include "safecell/features/feature_mask.hpp"
@@ -34,6 +35,12 @@ inline constexpr std::size_t kUnseenReasonCount = 5;
 // body codes, the grid's image size; std::invalid_argument otherwise). Visible: any().
 [[nodiscard]] FeatureMask front_most_cells(const cv::Mat& object_ids, BodyCode body,
                                            const FeatureGrid& grid);
+// Per camera (object_ids: one image each), whether `body` is visible in it.
+[[nodiscard]] std::vector<bool> visible_per_camera(const std::vector<cv::Mat>& object_ids,
+                                                   BodyCode body, const FeatureGrid& grid);
+// The body code of a scene's body b, counting its `humans` first, then its objects.
+[[nodiscard]] BodyCode scene_body_code(std::size_t humans, std::size_t b);
+
 // The feature cells at least half covered by the non-zero pixels of `coverage` (CV_8UC1).
 [[nodiscard]] FeatureMask covered_cells(const cv::Mat& coverage, const FeatureGrid& grid);
 
