@@ -30,6 +30,24 @@ struct Golden {
   pb::Message message;
 };
 
+// A delta of one chunk onto the version before.
+pb::Message map_chunk_message(std::uint64_t version, std::uint64_t hash) {
+  pb::Message m;
+  auto& c = *m.mutable_map_chunk();
+  c.set_kind(pb::MAP_UPDATE_KIND_DELTA);
+  c.set_map_version(version);
+  c.set_base_version(version - 1);
+  c.set_map_hash(hash);
+  c.set_chunk_index(0);
+  c.set_chunk_count(1);
+  c.set_first_cell(0);
+  c.set_end_cell(100);
+  c.set_runs(std::string("\x00\x03\x04\x0B\x59\x03", 6));
+  c.set_healthy_cameras(4);
+  c.set_camera_count(4);
+  return m;
+}
+
 std::vector<Golden> golden_messages() {
   std::vector<Golden> all;
   {
@@ -49,22 +67,7 @@ std::vector<Golden> golden_messages() {
     h.set_accepted(true);
     all.push_back({"handshake", m});
   }
-  {
-    pb::Message m;
-    auto& c = *m.mutable_map_chunk();
-    c.set_kind(pb::MAP_UPDATE_KIND_DELTA);
-    c.set_map_version(12);
-    c.set_base_version(11);
-    c.set_map_hash(0xEF0E2F9EF4C41E07ull);
-    c.set_chunk_index(0);
-    c.set_chunk_count(1);
-    c.set_first_cell(0);
-    c.set_end_cell(100);
-    c.set_runs(std::string("\x00\x03\x04\x0B\x59\x03", 6));
-    c.set_healthy_cameras(4);
-    c.set_camera_count(4);
-    all.push_back({"map_chunk", m});
-  }
+  all.push_back({"map_chunk", map_chunk_message(12, 0xEF0E2F9EF4C41E07ull)});
   {
     pb::Message m;
     m.mutable_keyframe_request()->set_held_map_version(11);
@@ -118,25 +121,11 @@ std::vector<Golden> golden_messages() {
     m.mutable_fault_report()->set_detail("hash mismatch");
     all.push_back({"fault_report", m});
   }
-  {
-    // Added with MapChunk.speed_reduction_permille (field 12): a map sent with the robot slowed to
-    // half its top speed by the protective separation.
-    pb::Message m;
-    auto& c = *m.mutable_map_chunk();
-    c.set_kind(pb::MAP_UPDATE_KIND_DELTA);
-    c.set_map_version(13);
-    c.set_base_version(12);
-    c.set_map_hash(0x5C1D0A7E3B9F2468ull);
-    c.set_chunk_index(0);
-    c.set_chunk_count(1);
-    c.set_first_cell(0);
-    c.set_end_cell(100);
-    c.set_runs(std::string("\x00\x03\x04\x0B\x59\x03", 6));
-    c.set_healthy_cameras(4);
-    c.set_camera_count(4);
-    c.set_speed_reduction_permille(500);
-    all.push_back({"map_chunk_slowed", m});
-  }
+  // Added with MapChunk.speed_reduction_permille (field 12): a map sent with the robot slowed to
+  // half its top speed by the protective separation.
+  pb::Message slowed = map_chunk_message(13, 0x5C1D0A7E3B9F2468ull);
+  slowed.mutable_map_chunk()->set_speed_reduction_permille(500);
+  all.push_back({"map_chunk_slowed", slowed});
   return all;
 }
 
