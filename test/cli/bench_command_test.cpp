@@ -48,10 +48,14 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   EXPECT_LE(report["e2e_all_forbidden_frames"].get<int>() * 10, frames) << "of " << frames;
   EXPECT_TRUE(report.contains("e2e_updates_not_applied"));
   // Latency is measured on the controller's clock, "sent" on the coprocessor's; no map may be
-  // applied before it was sent, within the clock offset estimate's error (well under a
-  // millisecond). Update by update: the p50s of all frames sent and of the frames applied are of
-  // different sets, and a clean-clone ASan run had them 0.1 ms the wrong way round.
-  EXPECT_GE(report["e2e_sent_to_applied_min_ms"].get<double>(), -1.0);
+  // applied before it was sent, within the clock offset estimate's error bound (well under a
+  // millisecond unloaded; a few under two heavy jobs, which had it at -4 to -8 ms against a fixed
+  // -1 ms) and half a millisecond of rounding. Update by update: the p50s of all frames sent and
+  // of the frames applied are of different sets, and a clean-clone ASan run had them 0.1 ms the
+  // wrong way round.
+  EXPECT_GE(report["e2e_sent_to_applied_min_ms"].get<double>(),
+            -(report["e2e_clock_uncertainty_max_ms"].get<double>() + 0.5))
+      << "the clock offset's error bound: " << report["e2e_clock_uncertainty_max_ms"];
   EXPECT_GE(report["e2e_latency_p99_ms"].get<double>(), report["e2e_latency_p50_ms"].get<double>());
 }
 

@@ -183,6 +183,7 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
   report["e2e_to_sent_p50_ms"] = e2e.to_sent_p50_ms;
   report["e2e_to_sent_p99_ms"] = e2e.to_sent_p99_ms;
   report["e2e_sent_to_applied_min_ms"] = e2e.sent_to_applied_min_ms;
+  report["e2e_clock_uncertainty_max_ms"] = e2e.clock_uncertainty_max_ms;
   report["e2e_updates_not_applied"] = e2e.updates_not_applied;
   report["e2e_all_forbidden_frames"] = e2e.all_forbidden_frames;
   report["service_fps"] = e2e.service_fps;

@@ -61,9 +61,13 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
       log);
   const std::uint64_t start_ns = steady_now_ns();
   ClosedLoopRecord record;
+  std::uint64_t clock_uncertainty_max_ns = 0;
   session.link().on_joint_state([&](const ReceivedJointState& received) {
     if (received.coprocessor_time_ns == 0) return;
     record.joints.push_back(joint_record(received, session.link().clock_sync(), start_ns));
+    if (const auto offset = session.link().clock_sync().offset()) {
+      clock_uncertainty_max_ns = std::max(clock_uncertainty_max_ns, offset->uncertainty_ns);
+    }
   });
   log << "end to end: rendering the frames first (the camera's part)\n";
   ReplayedFrameSets frames(
@@ -118,6 +122,7 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
         latency_ms.size() == 1 ? sent_to_applied_ms
                                : std::min(figures.sent_to_applied_min_ms, sent_to_applied_ms);
   }
+  figures.clock_uncertainty_max_ms = static_cast<double>(clock_uncertainty_max_ns) * 1e-6;
   figures.latency_p50_ms = percentile(latency_ms, 0.5);
   figures.latency_p99_ms = percentile(latency_ms, 0.99);
   figures.latency_max_ms = percentile(latency_ms, 1.0);

@@ -23,6 +23,9 @@ struct EndToEndFigures {
   // controller's clock brought onto the coprocessor's. Below 0 by more than the clock offset's
   // error means a map was applied before it was sent: the latency figures would be wrong.
   double sent_to_applied_min_ms = 0.0;
+  // The clock offset's error bound, the largest while the joint states came in (half the echo's
+  // round trip: under load a few milliseconds).
+  double clock_uncertainty_max_ms = 0.0;
   // Frames whose map was all forbidden (the robot's pose unknown): must be 0, or the figures
   // measured a shortcut, not the pipeline.
   std::size_t all_forbidden_frames = 0;

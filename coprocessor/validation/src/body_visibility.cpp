@@ -65,8 +65,10 @@ FeatureMask front_most_cells(const cv::Mat& object_ids, BodyCode body, const Fea
 
 std::vector<bool> visible_per_camera(const std::vector<cv::Mat>& object_ids, BodyCode body,
                                      const FeatureGrid& grid) {
-  std::vector<bool> visible;
-  for (const cv::Mat& ids : object_ids) visible.push_back(front_most_cells(ids, body, grid).any());
+  std::vector<bool> visible(object_ids.size());
+  for (std::size_t c = 0; c < object_ids.size(); ++c) {
+    visible[c] = front_most_cells(object_ids[c], body, grid).any();
+  }
   return visible;
 }
 
