@@ -52,6 +52,29 @@ TEST_F(LutsCommand, BuildsOnceAndReportsSizes) {
   EXPECT_NE(mixed.err.find("0000000000000000.sclut"), std::string::npos) << mixed.err;
 }
 
+TEST_F(LutsCommand, BuildVerifiesTheTablesAgainstTheSilhouettes) {
+  const fs::path out = folder_ / "luts";
+  const auto built = test::safecell_cli({"luts", "build", "--cell", cell_.string(), "--out",
+                                         out.string(), "--verify-cells", "50", "--json"});
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  const auto verified = nlohmann::json::parse(built.out)["verified"];
+  EXPECT_EQ(verified["cells"].get<int>(), 50);
+  EXPECT_GT(verified["pairs"].get<double>(), 50.0 * 4096 * 4);
+  EXPECT_EQ(verified["mismatches"].get<int>(), 0) << verified.dump(2);
+
+  // The same tables, now read from the folder, checked again with other cells; the text says how
+  // many were compared and with which seed.
+  const auto text = test::safecell_cli({"luts", "build", "--cell", cell_.string(), "--out",
+                                        out.string(), "--verify-cells", "20", "--seed", "3"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("20 cells (seed 3)"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(": 0 mismatches"), std::string::npos) << text.out;
+
+  const auto absurd = test::safecell_cli(
+      {"luts", "build", "--cell", cell_.string(), "--out", out.string(), "--verify-cells", "-4"});
+  EXPECT_EQ(absurd.exit_code, 2) << absurd.err;
+}
+
 TEST_F(LutsCommand, CheckComparesTheRecordedRobotWithTheModel) {
   const auto check = test::safecell_cli({"luts", "check", "--cell", cell_.string(), "--key-stride",
                                          "6", "--wrist-samples", "1", "--json"});

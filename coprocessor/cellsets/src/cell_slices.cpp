@@ -28,7 +28,8 @@ CellSet cells_in_every_slice(const CellSet& cells, std::uint32_t slice_cells,
   std::vector<std::uint64_t>& out = common.words();
   for (std::size_t word = 0; word < out.size(); ++word) {
     std::uint64_t all = ~std::uint64_t{0};
-    for (std::uint32_t slice = 0; slice < slices; ++slice) {
+    // Most words of a pixel's set are empty: stop at the first slice that clears them all.
+    for (std::uint32_t slice = 0; slice < slices && all != 0; ++slice) {
       all &= bits_from(cells.words(), std::size_t{slice} * slice_cells + word * 64);
     }
     out[word] = all;

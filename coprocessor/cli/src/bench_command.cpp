@@ -11,11 +11,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "cell_fusion_bench.hpp"
 #include "command_line.hpp"
 #include "end_to_end_bench.hpp"
 #include "safecell/bench/map_sequence_writer.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/errors/input_error.hpp"
 
 namespace safecell {
 namespace {
@@ -98,9 +100,74 @@ nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
 #endif
 }
 
+nlohmann::ordered_json cell_fusion_json(const CellFusionFigures& figures) {
+  return {{"cell", figures.cell},
+          {"cells", figures.cells},
+          {"m_max_m", figures.m_max_m},
+          {"lut_bytes_per_camera", figures.lut_bytes_per_camera},
+          {"tables_built", figures.tables_built},
+          {"tables_build_s", figures.tables_build_s},
+          {"frames", figures.frames},
+          {"fusion_p50_ms", figures.fusion_p50_ms},
+          {"fusion_p99_ms", figures.fusion_p99_ms},
+          {"fusion_max_ms", figures.fusion_max_ms},
+          {"features_p50_ms", figures.features_p50_ms},
+          {"forbidden_share_mean", figures.forbidden_share_mean},
+          {"forbidden_share_max", figures.forbidden_share_max}};
+}
+
+// `bench --cell`: the cell's fusion against the default cell's, the same frames of the demo.
+void run_cell_fusion_bench(const BenchOptions& options, std::ostream& out, std::ostream& progress) {
+  if (options.frames < 10 || options.frames > 100000) {
+    throw InputError("--frames must be 10..100000, got " + std::to_string(options.frames));
+  }
+  progress << "the baseline, "
+           << (options.baseline_cell_path.empty() ? "the default cell" : options.baseline_cell_path)
+           << ":\n"
+           << std::flush;
+  const CellFusionFigures baseline =
+      measure_cell_fusion(options.baseline_cell_path, options.lut_cache, options.frames, progress);
+  progress << "the cell of " << options.cell_path << ":\n" << std::flush;
+  const CellFusionFigures cell =
+      measure_cell_fusion(options.cell_path, options.lut_cache, options.frames, progress);
+  const double ratio =
+      baseline.fusion_p99_ms > 0.0 ? cell.fusion_p99_ms / baseline.fusion_p99_ms : 0.0;
+  if (options.json) {
+    nlohmann::ordered_json report;
+    report["baseline"] = cell_fusion_json(baseline);
+    report["cell"] = cell_fusion_json(cell);
+    report["fusion_p99_ratio"] = ratio;
+    out << report.dump(2) << '\n';
+    return;
+  }
+  using Align = TextTable::Align;
+  TextTable table({{"cell", Align::kLeft},
+                   {"m_max [m]", Align::kRight},
+                   {"C-space cells", Align::kRight},
+                   {"LUT-2 [MB/camera]", Align::kRight},
+                   {"fusion p50 [ms]", Align::kRight},
+                   {"p99 [ms]", Align::kRight},
+                   {"worst [ms]", Align::kRight},
+                   {"forbidden (mean)", Align::kRight}});
+  for (const CellFusionFigures* figures : {&baseline, &cell}) {
+    table.add_row({figures->cell, fixed(figures->m_max_m, 3), grouped(figures->cells),
+                   fixed(figures->lut_bytes_per_camera / 1e6, 1), fixed(figures->fusion_p50_ms, 3),
+                   fixed(figures->fusion_p99_ms, 3), fixed(figures->fusion_max_ms, 3),
+                   fixed(100.0 * figures->forbidden_share_mean, 1) + " %"});
+  }
+  table.print(out);
+  out << "\n"
+      << options.frames << " frames of the demo from when the person walks in, one "
+      << "thread; fusion p99 " << fixed(ratio, 1) << "x the baseline's\n";
+}
+
 }  // namespace
 
 void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& progress) {
+  if (!options.cell_path.empty()) {
+    run_cell_fusion_bench(options, out, progress);
+    return;
+  }
   BenchmarkRunOptions run;
   if (options.quick) {
     run.min_time_s = 0.02;
@@ -199,6 +266,18 @@ void add_bench_command(CLI::App& app, CommandLine& line) {
       "bench", "Run the project's benchmarks on the default cell (median and worst case)");
   bench_command->add_flag("--json", bench->json, "Print one JSON object instead of a table");
   bench_command->add_flag("--quick", bench->quick, "Short runs: a smoke test, not a measurement");
+  bench_command->add_option(
+      "--cell", bench->cell_path,
+      "Instead of the benchmarks: the fusion on this cell file's grid (such as a finer max-move) "
+      "against the default cell's, over the same frames of the demo; its tables come from the "
+      "cache (built first, with a progress bar, when missing)");
+  bench_command->add_option("--baseline-cell", bench->baseline_cell_path,
+                            "The cell --cell is compared with; without it the built-in default "
+                            "cell");
+  bench_command->add_option("--frames", bench->frames, "Frames of the demo --cell runs")
+      ->capture_default_str();
+  bench_command->add_option("--lut-cache", bench->lut_cache,
+                            "Folder of the tables --cell uses; without it the cache folder");
   bench_command->callback(
       [=, &line] { line.action = [=, &line] { run_bench(*bench, line.out, line.err); }; });
 }

@@ -19,7 +19,7 @@ struct EndToEndFigures {
   double to_sent_p50_ms = 0.0;  // exposure -> the update's last frame sent (the pipeline)
   double to_sent_p99_ms = 0.0;
   std::size_t updates_not_applied = 0;  // of those frames, maps the controller never held
-  // Over the updates applied: the least of (applied in the controller - last frame sent), the
+  // Over the updates applied: the least of (applied in the controller - sending began), the
   // controller's clock brought onto the coprocessor's. Below 0 by more than the clock offset's
   // error means a map was applied before it was sent: the latency figures would be wrong.
   double sent_to_applied_min_ms = 0.0;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "safecell/cli/cli_app.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/errors/input_error.hpp"
+#include "safecell/lut_build/pixel_table_check.hpp"
 #include "safecell/lut_files/lut_cache.hpp"
 #include "safecell/lut_files/lut_file.hpp"
 
@@ -140,9 +142,53 @@ void print_summary(const nlohmann::ordered_json& report, std::ostream& out) {
   }
 }
 
+// Compares the tables with the silhouettes of `verify_cells` sampled cells; the report's
+// "verified" field. Returns whether they agree.
+bool verify_tables(const LutsBuildOptions& options, const CellModel& cell, const CspaceGrid& grid,
+                   const ModelLutOptions& lut_options, const LutSet& luts, ProgressBar& bar,
+                   nlohmann::ordered_json& report) {
+  std::mt19937_64 rng(options.seed);
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
+  std::vector<CellIndex> sample(options.verify_cells);
+  for (CellIndex& index : sample) index = any_cell(rng);
+  const ModelSilhouettes silhouettes(cell, grid, lut_options);
+  const auto started = std::chrono::steady_clock::now();
+  const PixelTableCheck check =
+      check_pixel_tables(luts, silhouettes, std::move(sample), lut_options.threads,
+                         [&bar](double fraction) { bar.update("verifying LUT-2", fraction); });
+  bar.finish();
+  nlohmann::ordered_json first = nlohmann::ordered_json::array();
+  for (const PixelTableMismatch& mismatch : check.first_mismatches) {
+    first.push_back(describe(mismatch, luts));
+  }
+  report["verified"] = {
+      {"cells", check.cells},
+      {"seed", options.seed},
+      {"entries", check.entries},
+      {"pairs", check.pairs},
+      {"mismatches", check.mismatches},
+      {"first_mismatches", std::move(first)},
+      {"seconds",
+       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
+  return check.passed();
+}
+
+void print_verification(const nlohmann::ordered_json& verified, std::ostream& out) {
+  out << "verified against the silhouettes computed directly: "
+      << grouped(verified["cells"].get<unsigned long long>()) << " cells (seed "
+      << verified["seed"].get<std::uint64_t>() << "), "
+      << grouped(verified["entries"].get<unsigned long long>()) << " entries, "
+      << grouped(verified["pairs"].get<unsigned long long>())
+      << " pairs: " << grouped(verified["mismatches"].get<unsigned long long>()) << " mismatches ("
+      << fixed(verified["seconds"].get<double>(), 1) << " s)\n";
+  for (const auto& line : verified["first_mismatches"]) {
+    out << "  " << line.get<std::string>() << "\n";
+  }
+}
+
 }  // namespace
 
-void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err) {
+int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err) {
   const CellModel loaded = load_cell_model(load_cell_file_or_default(options.cell_path));
   const CspaceGrid grid = make_grid(loaded.config);
   // The same tables as the commands that run the pipeline use, so that they find them cached.
@@ -166,14 +212,19 @@ void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ost
   nlohmann::ordered_json report = summary_json(luts.file, read_lut_file_summary(luts.file));
   report["built"] = luts.built;
   report["build_s"] = luts.build_s;
+  const bool agree = options.verify_cells == 0 ||
+                     verify_tables(options, cell, grid, lut_options, luts.set, bar, report);
+  const int exit_code = agree ? 0 : 1;
   if (options.json) {
     out << report.dump(2) << '\n';
-    return;
+    return exit_code;
   }
   out << (luts.built ? "built in " + fixed(luts.build_s, 1) + " s: "
                      : "already built (use --force to build again): ")
       << luts.file.string() << "\n";
   print_summary(report, out);
+  if (report.contains("verified")) print_verification(report["verified"], out);
+  return exit_code;
 }
 
 int run_luts_info(const LutsInfoOptions& options, std::ostream& out, std::ostream& err) {
@@ -228,8 +279,18 @@ void add_luts_build_and_info_commands(CLI::App& luts, CommandLine& line) {
       ->capture_default_str();
   build_command->add_flag("--force", build->force, "Build again even when the file exists");
   build_command->add_flag("--json", build->json, "Print one JSON object instead of a table");
-  build_command->callback(
-      [=, &line] { line.action = [=, &line] { run_luts_build(*build, line.out, line.err); }; });
+  build_command
+      ->add_option("--verify-cells", build->verify_cells,
+                   "After the build, compare the tables with the silhouettes of this many random "
+                   "C-space cells computed directly from the model (every feature cell, block and "
+                   "difference entry); exit 1 on a mismatch")
+      ->capture_default_str()
+      ->check(CLI::Range(0U, 100000U));
+  build_command->add_option("--seed", build->seed, "Seed of the cells --verify-cells samples")
+      ->capture_default_str();
+  build_command->callback([=, &line] {
+    line.action = [=, &line] { line.exit_code = run_luts_build(*build, line.out, line.err); };
+  });
   const auto lut_info = std::make_shared<LutsInfoOptions>();
   CLI::App* info_command = luts.add_subcommand(
       "info", "What a LUT file holds: sizes per camera, compression, cells, fingerprint");

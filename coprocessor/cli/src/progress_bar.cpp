@@ -27,12 +27,16 @@ void ProgressBar::update(const std::string& stage, double fraction_done) {
   if (stage != stage_) {
     if (line_open_ && interactive_) out_ << '\n';
     line_open_ = false;
+    if (!stage_.empty()) {
+      stages_[stage_].spent_s += std::chrono::duration<double>(now - stage_start_).count();
+    }
     stage_ = stage;
     stage_start_ = now;
-    last_quarter_ = -1;
     last_draw_ = Clock::time_point{};
   }
-  const double elapsed_s = std::chrono::duration<double>(now - stage_start_).count();
+  StageClock& clock = stages_[stage_];
+  const double elapsed_s =
+      clock.spent_s + std::chrono::duration<double>(now - stage_start_).count();
   const std::string left =
       fraction > 0.02 ? fixed(elapsed_s * (1.0 - fraction) / fraction, 1) + " s left" : "";
   if (interactive_) {
@@ -46,8 +50,8 @@ void ProgressBar::update(const std::string& stage, double fraction_done) {
     return;
   }
   const int quarter = static_cast<int>(fraction * 4.0);
-  if (quarter == last_quarter_) return;
-  last_quarter_ = quarter;
+  if (quarter == clock.last_quarter) return;
+  clock.last_quarter = quarter;
   out_ << stage_ << ": " << quarter * 25 << "%" << (left.empty() ? "" : ", " + left) << '\n'
        << std::flush;
 }

@@ -2,20 +2,44 @@
 
 #include <algorithm>
 #include <mutex>
+#include <optional>
 #include <variant>
 
 #include "safecell/geometry/shape_bounds.hpp"
 
 namespace safecell {
 
-bool ball_reaches(const Ball& ball, const PlacedShape& obstacle) {
-  const Eigen::Vector3d local = obstacle.pose.inverse() * ball.centre_m;
-  if (const auto* box = std::get_if<Box>(&obstacle.shape)) {
-    const Eigen::Vector3d half = box->size_m / 2.0;
-    const Eigen::Vector3d outside = (local.cwiseAbs() - half).cwiseMax(0.0);
-    return outside.norm() <= ball.radius_m;
+namespace {
+
+// An obstacle as the test per ball needs it: the pose inverted once (per ball, the inversion was
+// most of the stage's time), a box's half size or another shape's bounding radius.
+struct ObstacleTest {
+  explicit ObstacleTest(const PlacedShape& obstacle) : cell_to_local(obstacle.pose.inverse()) {
+    if (const auto* box = std::get_if<Box>(&obstacle.shape)) {
+      half_size_m = box->size_m / 2.0;
+    } else {
+      bounding_radius = bounding_radius_m(obstacle.shape);
+    }
   }
-  return local.norm() <= ball.radius_m + bounding_radius_m(obstacle.shape);
+
+  [[nodiscard]] bool reached_by(const Ball& ball) const {
+    const Eigen::Vector3d local = cell_to_local * ball.centre_m;
+    if (half_size_m) {
+      const Eigen::Vector3d outside = (local.cwiseAbs() - *half_size_m).cwiseMax(0.0);
+      return outside.norm() <= ball.radius_m;
+    }
+    return local.norm() <= ball.radius_m + bounding_radius;
+  }
+
+  Eigen::Isometry3d cell_to_local;
+  std::optional<Eigen::Vector3d> half_size_m;  // a box
+  double bounding_radius = 0.0;                // any other shape
+};
+
+}  // namespace
+
+bool ball_reaches(const Ball& ball, const PlacedShape& obstacle) {
+  return ObstacleTest(obstacle).reached_by(ball);
 }
 
 CellSet static_obstacle_cells(const CellEnvelope& envelope,
@@ -24,10 +48,11 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
   const CspaceGrid& grid = envelope.grid();
   CellSet cells(grid.cell_count());
   if (obstacles.empty()) return cells;
-  const auto touches = [&obstacles](const std::vector<Ball>& balls) {
+  const std::vector<ObstacleTest> tests(obstacles.begin(), obstacles.end());
+  const auto touches = [&tests](const std::vector<Ball>& balls) {
     return std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
-      return std::any_of(obstacles.begin(), obstacles.end(),
-                         [&](const PlacedShape& obstacle) { return ball_reaches(ball, obstacle); });
+      return std::any_of(tests.begin(), tests.end(),
+                         [&](const ObstacleTest& test) { return test.reached_by(ball); });
     });
   };
   // The head's bodies are tested once per prefix (cell_envelope.hpp).

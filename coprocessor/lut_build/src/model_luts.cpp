@@ -87,15 +87,6 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
                         const ModelLutOptions& options, const StagedProgress& progress) {
   const ModelSilhouettes silhouettes(cell, grid, options);
   const std::size_t parts = silhouettes.parts().size();
-  const std::size_t cameras = silhouettes.camera_count();
-  std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
-      cell, grid, parts,
-      [&silhouettes, parts, cameras](CellIndex cell_index, std::vector<FeatureMask>& masks) {
-        for (std::size_t part = 0; part < parts; ++part) {
-          silhouettes.add_part_silhouettes(cell_index, part, masks.data() + part * cameras);
-        }
-      },
-      options.threads, progress);
   LutSet set;
   set.fingerprint = model_lut_fingerprint(cell, grid, options);
   set.grid_fingerprint = grid.fingerprint();
@@ -103,8 +94,31 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
   set.columns = cell.feature_grid.columns();
   set.rows = cell.feature_grid.rows();
   set.parts = silhouettes.parts();
-  set.cameras = invert_cell_tables(cell, grid, parts, std::move(cell_tables), false,
-                                   options.threads, progress);
+  set.cameras.resize(cell.cameras.size());
+  for (std::size_t camera = 0; camera < cell.cameras.size(); ++camera) {
+    set.cameras[camera].camera = cell.cameras[camera].name();
+  }
+  // One part at a time: only that part's LUT-1 is held while its LUT-2 is built (LUT-1 of every
+  // part at once took 17.6 GB on a 6 cm grid, and the build ran out of memory). Each part's
+  // silhouettes cost what they did together: the balls of the parts before it come from the
+  // cache of ModelSilhouettes.
+  for (std::size_t part = 0; part < parts; ++part) {
+    const StagedProgress part_progress = [&progress, part, parts](int stage, double fraction) {
+      if (progress)
+        progress(stage, (static_cast<double>(part) + fraction) / static_cast<double>(parts));
+    };
+    std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
+        cell, grid, 1,
+        [&silhouettes, part](CellIndex cell_index, std::vector<FeatureMask>& masks) {
+          silhouettes.add_part_silhouettes(cell_index, part, masks.data());
+        },
+        options.threads, part_progress);
+    std::vector<CameraLuts> part_luts = invert_cell_tables(cell, grid, 1, std::move(cell_tables),
+                                                           false, options.threads, part_progress);
+    for (std::size_t camera = 0; camera < part_luts.size(); ++camera) {
+      set.cameras[camera].parts.push_back(std::move(part_luts[camera].parts.front()));
+    }
+  }
   set.static_cells = static_obstacle_cells(silhouettes.envelope(), cell.obstacles, options.threads,
                                            stage_progress(progress, 2));
   return set;

@@ -1,6 +1,7 @@
 #include "safecell/lut_build/pixel_table_builder.hpp"
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -8,6 +9,9 @@
 
 namespace safecell {
 namespace {
+
+// Cells per chunk of the gather: a multiple of 64, so that chunks own whole words.
+constexpr std::size_t kGatherCells = std::size_t{64} * 1024;
 
 // Entries as they are built, in row-major block order.
 struct EntriesBuild {
@@ -34,7 +38,7 @@ void append_entries(const std::vector<std::vector<std::uint8_t>>& entries, Entri
 
 // Cuts the sets of one band's blocks (rows of `columns` blocks) into strips (in parallel) and
 // appends them to the level. first_band: the band holds the image's top row.
-void append_band(std::vector<CellSet>& sets, std::size_t columns, bool first_band,
+void append_band(std::span<const CellSet> sets, std::size_t columns, bool first_band,
                  const BoxAxes& axes, unsigned threads, LevelBuild& level) {
   std::vector<std::vector<std::uint8_t>> strips(sets.size());
   std::array<std::vector<std::vector<std::uint8_t>>, kNeighbourCount> differences;
@@ -88,21 +92,38 @@ PartLuts build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, const 
     levels[l].columns = (columns + levels[l].block - 1) / levels[l].block;
     levels[l].rows = (rows + levels[l].block - 1) / levels[l].block;
   }
+  // The bitsets of a band at every level, allocated once: on a fine grid a band is a gigabyte,
+  // and allocating it anew per band (and per level) cost more than filling it.
+  std::vector<std::vector<CellSet>> band_sets(levels.size());
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const std::size_t level_rows = (static_cast<std::size_t>(band_rows) >> l) + 1;
+    band_sets[l].assign(
+        std::min<std::size_t>(level_rows, static_cast<std::size_t>(levels[l].rows)) *
+            static_cast<std::size_t>(levels[l].columns),
+        CellSet(grid.cell_count()));
+  }
   for (int band = 0; band < rows; band += band_rows) {
     const int band_end = std::min(rows, band + band_rows);
-    std::vector<CellSet> sets(
-        static_cast<std::size_t>(band_end - band) * static_cast<std::size_t>(columns),
-        CellSet(grid.cell_count()));
-    // Gather: one feature row per chunk, so that no two threads write the same bitset.
-    parallel_chunks(static_cast<std::size_t>(band_end - band), 1, build.threads,
-                    [&](std::size_t, std::size_t begin, std::size_t) {
-                      const int row = band + static_cast<int>(begin);
-                      CellSet* row_cells = sets.data() + begin * static_cast<std::size_t>(columns);
-                      for (CellIndex cell = 0; cell < grid.cell_count(); ++cell) {
+    std::span<CellSet> sets(band_sets[0].data(), static_cast<std::size_t>(band_end - band) *
+                                                     static_cast<std::size_t>(columns));
+    parallel_chunks(sets.size(), 1, build.threads,
+                    [&](std::size_t, std::size_t begin, std::size_t) { sets[begin].clear(); });
+    // Gather: one pass over the cells per band, in chunks of whole 64-cell words, so that no two
+    // threads write the same word of a bitset (a pass per feature row cost a pass over every
+    // cell's rectangles per row: minutes on a fine grid).
+    parallel_chunks(grid.cell_count(), kGatherCells, build.threads,
+                    [&](std::size_t, std::size_t begin, std::size_t end) {
+                      for (auto cell = static_cast<CellIndex>(begin); cell < end; ++cell) {
                         for (const auto& rect : cell_table.rects_of(cell)) {
-                          if (rect.row0 > row || rect.row1 < row) continue;
-                          for (int column = rect.col0; column <= rect.col1; ++column) {
-                            row_cells[column].set(cell);
+                          const int first_row = std::max<int>(rect.row0, band);
+                          const int end_row = std::min<int>(rect.row1 + 1, band_end);
+                          for (int row = first_row; row < end_row; ++row) {
+                            CellSet* row_cells =
+                                sets.data() + static_cast<std::size_t>(row - band) *
+                                                  static_cast<std::size_t>(columns);
+                            for (int column = rect.col0; column <= rect.col1; ++column) {
+                              row_cells[column].set(cell);
+                            }
                           }
                         }
                       }
@@ -114,17 +135,25 @@ PartLuts build_pixel_to_cells_tables(const CellToPixelsTable& cell_table, const 
     for (std::size_t l = 1; l < levels.size(); ++l) {
       const int coarse_columns = (set_columns + 1) / 2;
       const int coarse_rows = (set_rows + 1) / 2;
-      std::vector<CellSet> coarse(
-          static_cast<std::size_t>(coarse_columns) * static_cast<std::size_t>(coarse_rows),
-          CellSet(grid.cell_count()));
+      const std::span<CellSet> coarse(
+          band_sets[l].data(),
+          static_cast<std::size_t>(coarse_columns) * static_cast<std::size_t>(coarse_rows));
       const auto fine_width = static_cast<std::size_t>(set_columns);
+      const auto fine_rows = static_cast<std::size_t>(set_rows);
       const auto coarse_width = static_cast<std::size_t>(coarse_columns);
-      for (std::size_t y = 0; y < static_cast<std::size_t>(set_rows); ++y) {
-        for (std::size_t x = 0; x < fine_width; ++x) {
-          coarse[y / 2 * coarse_width + x / 2] |= sets[y * fine_width + x];
-        }
-      }
-      sets = std::move(coarse);
+      parallel_chunks(coarse.size(), 1, build.threads,
+                      [&](std::size_t, std::size_t begin, std::size_t) {
+                        CellSet& block = coarse[begin];
+                        block.clear();
+                        const std::size_t x = begin % coarse_width * 2;
+                        const std::size_t y = begin / coarse_width * 2;
+                        for (std::size_t fy = y; fy < std::min(y + 2, fine_rows); ++fy) {
+                          for (std::size_t fx = x; fx < std::min(x + 2, fine_width); ++fx) {
+                            block |= sets[fy * fine_width + fx];
+                          }
+                        }
+                      });
+      sets = coarse;
       set_columns = coarse_columns;
       set_rows = coarse_rows;
       append_band(sets, static_cast<std::size_t>(set_columns), band == 0, axes, build.threads,

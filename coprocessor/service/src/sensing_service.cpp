@@ -127,6 +127,7 @@ const ServiceCycle& SensingService::process(const FrameSet& delivered) {
     }
   }
   cycle.forbidden_cells = last_map_->count();
+  cycle.send_started_ns = steady_now_ns();
   const MapUpdate update =
       link_.send_map(*last_map_, cycle.exposure_ns != 0 ? cycle.exposure_ns : steady_now_ns(),
                      cycle.known_views, static_cast<std::uint32_t>(frames.frames.size()),

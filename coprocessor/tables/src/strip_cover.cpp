@@ -1,6 +1,7 @@
 #include "safecell/tables/strip_cover.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "safecell/cellsets/cell_slices.hpp"
 #include "safecell/cellsets/line_levels.hpp"
@@ -57,15 +58,51 @@ class StripCollector {
 
 namespace {
 
-// sets[d] for d = 1..axes.count: the cells over the first d axes whose cells hold along all
-// remaining axes; sets[axes.count] is `cells`.
-std::vector<CellSet> level_sets_of(const CellSet& cells, const BoxAxes& axes) {
-  std::vector<CellSet> sets(axes.count + 1);
-  sets[axes.count] = cells;
-  for (std::uint32_t d = axes.count - 1; d >= 1; --d) {
-    sets[d] = cells_in_every_slice(sets[d + 1], axes.stride[d], axes.cells[d]);
+// The levels of a set: at(d) for d = 1..axes.count holds the cells over the first d axes whose
+// cells hold along all remaining axes; the top level is the set itself, not a copy (on a fine
+// grid it is megabytes, and a copy per pixel was most of a build's time).
+class LevelSets {
+ public:
+  LevelSets(const CellSet& cells, const BoxAxes& axes) : top_(&cells), lower_(axes.count) {
+    for (std::uint32_t d = axes.count - 1; d >= 1; --d) {
+      lower_[d] = cells_in_every_slice(at(d + 1), axes.stride[d], axes.cells[d]);
+    }
   }
-  return sets;
+  [[nodiscard]] const CellSet& at(std::uint32_t d) const {
+    return d == lower_.size() ? *top_ : lower_[d];
+  }
+
+ private:
+  const CellSet* top_;
+  std::vector<CellSet> lower_;  // lower_[d] for d = 1..count-1; lower_[0] unused
+};
+
+// `count` (1..64) bits of `cells` from cell `first` on (precondition: first + count <=
+// cells.cell_count()).
+std::uint64_t bits_at(const CellSet& cells, CellIndex first, CellIndex count) {
+  const std::vector<std::uint64_t>& words = cells.words();
+  const std::size_t word = first / 64;
+  const std::size_t shift = first % 64;
+  std::uint64_t bits = words[word] >> shift;
+  if (shift != 0 && shift + count > 64) bits |= words[word + 1] << (64 - shift);
+  return count == 64 ? bits : bits & ((std::uint64_t{1} << count) - 1);
+}
+
+// Whether each of the cells first..first+length-1 of a line of level d is in the level below
+// (repeated along axis d - 1: cell x of level d is cell x % lower.cell_count() there) or in
+// `known` (of level d). The run lies in one line, and a line of level d is a line of the level
+// below at x % lower.cell_count(), so the run is a run there too.
+bool covered(const CellSet* lower, const CellSet* known, CellIndex first, CellIndex length) {
+  const CellIndex lower_first = lower != nullptr ? first % lower->cell_count() : 0;
+  for (CellIndex done = 0; done < length; done += 64) {
+    const CellIndex count = std::min<CellIndex>(64, length - done);
+    std::uint64_t bits = 0;
+    if (lower != nullptr) bits |= bits_at(*lower, lower_first + done, count);
+    if (known != nullptr) bits |= bits_at(*known, first + done, count);
+    const std::uint64_t all = count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+    if (bits != all) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -73,20 +110,19 @@ std::vector<CellSet> level_sets_of(const CellSet& cells, const BoxAxes& axes) {
 std::size_t append_strips(const CellSet& cells, const BoxAxes& axes,
                           std::vector<std::uint8_t>& strip_bytes, const CellSet* known) {
   const LineLevels levels = LineLevels::of(axes, cells.cell_count());
-  const std::vector<CellSet> level_sets = level_sets_of(cells, axes);
-  const std::vector<CellSet> known_sets =
-      known != nullptr ? level_sets_of(*known, axes) : std::vector<CellSet>{};
+  const LevelSets level_sets(cells, axes);
+  const std::optional<LevelSets> known_sets =
+      known != nullptr ? std::optional<LevelSets>(std::in_place, *known, axes) : std::nullopt;
   StripCollector collector;
   for (std::uint32_t d = 1; d <= axes.count; ++d) {
-    const CellSet& set = level_sets[d];
-    CellSet covered =
-        d == 1 ? CellSet(set.cell_count()) : repeat_slice(level_sets[d - 1], axes.cells[d - 1]);
-    if (known != nullptr) covered |= known_sets[d];
+    const CellSet& set = level_sets.at(d);
+    const CellSet* lower = d == 1 ? nullptr : &level_sets.at(d - 1);
+    const CellSet* known_here = known_sets ? &known_sets->at(d) : nullptr;
     for (CellIndex first = set.next_set(0); first < set.cell_count();) {
       const CellIndex line = first / levels.line_cells;
       const CellIndex line_end = (line + 1) * levels.line_cells;
       const CellIndex end = set.next_clear(first, line_end);
-      if (!covered.all_in_range(first, end)) {
+      if (!covered(lower, known_here, first, end - first)) {
         collector.add(levels.first_line[d] + line,
                       LineRun{first - line * levels.line_cells, end - first});
       }

@@ -56,6 +56,7 @@ class CellLines {
   std::uint32_t words_per_line_ = 1;  // ceil(cells along joint 0 / 64)
   // The lowest level written since the last fold (levels_.count: none below the full grid).
   std::uint32_t lowest_written_ = 0;
+  bool clear_ = true;  // nothing added since the set was made or cleared
   std::vector<std::uint64_t> words_;
 };
 

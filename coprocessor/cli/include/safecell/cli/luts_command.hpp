@@ -15,6 +15,10 @@ struct LutsBuildOptions {
   unsigned threads = 0;
   bool force = false;  // build even when the folder holds the tables already
   bool json = false;
+  // Cells whose LUT-2 entries are compared with their silhouettes computed directly after the
+  // build (pixel_table_check.hpp); 0: none.
+  std::uint32_t verify_cells = 0;
+  std::uint64_t seed = 1;  // of the cells sampled
 };
 
 struct LutsInfoOptions {
@@ -22,7 +26,8 @@ struct LutsInfoOptions {
   bool json = false;
 };
 
-void run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err);
+// Returns 1 when the verification found a mismatch, 0 otherwise.
+int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostream& err);
 // A file: throws LutFileError when it is not a usable LUT file. A folder (such as the cache, which
 // keeps the files of earlier versions and settings): reports every usable file, names each
 // refused one and why on `err`, and returns kExitBadInput when there was one (0 otherwise);

@@ -40,7 +40,11 @@ struct SensingServiceSettings {
 struct ServiceCycle {
   std::uint64_t index = 0;        // cycles so far, this one included
   std::uint64_t exposure_ns = 0;  // the set's median exposure, coprocessor clock
-  std::uint64_t sent_ns = 0;      // when the map update left
+  // When sending the map update began, and when it had left (send_map returned): whatever is
+  // read of the update elsewhere happened after the first; the second may be late by however long
+  // this thread was not scheduled after the send.
+  std::uint64_t send_started_ns = 0;
+  std::uint64_t sent_ns = 0;
   bool pose_known = false;
   std::vector<double> q;      // the robot at the exposure, when known
   std::string all_forbidden;  // why the whole map was forbidden this cycle; empty: it was not

@@ -1,0 +1,59 @@
+#include "cell_fusion_bench.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "safecell/sim/demo_scenario.hpp"
+#include "safecell/validation/percentile.hpp"
+#include "simulated_sensing.hpp"
+
+namespace safecell {
+
+CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::string& lut_cache,
+                                      int frames, std::ostream& log) {
+  SimulatedSensing sensing(cell_path, lut_cache, 1, log);
+  CellFusionFigures figures;
+  figures.cell = sensing.cell.config.name;
+  figures.cells = sensing.grid.cell_count();
+  figures.m_max_m = sensing.cell.config.m_max_m;
+  double bytes = 0.0;
+  for (const auto& camera : sensing.luts.set.cameras) {
+    bytes += static_cast<double>(camera.pixel_table_bytes());
+  }
+  figures.lut_bytes_per_camera =
+      bytes / static_cast<double>(std::max<std::size_t>(1, sensing.luts.set.cameras.size()));
+  figures.tables_built = sensing.luts.built;
+  figures.tables_build_s = sensing.luts.build_s;
+  figures.frames = frames;
+
+  // The frames first, so that the rendering is outside what is timed.
+  const HumanWalker person = demo_person(sensing.cell);
+  std::vector<SimScene> scenes;
+  std::vector<std::vector<cv::Mat>> frame_sets;
+  for (int frame = 0; frame < frames; ++frame) {
+    const double time_s = kDemoHumanEnters_s + frame / 30.0;
+    scenes.push_back(demo_scene(sensing.grid, person, time_s));
+    frame_sets.push_back(
+        sensing.sim.render(scenes.back(), static_cast<std::size_t>(frame), time_s));
+  }
+  std::vector<double> fusion_ms;
+  std::vector<double> features_ms;
+  double share_sum = 0.0;
+  for (int frame = 0; frame < frames; ++frame) {
+    const CellSet& map = sensing.pipeline.process(frame_sets[static_cast<std::size_t>(frame)],
+                                                  scenes[static_cast<std::size_t>(frame)].q);
+    fusion_ms.push_back(sensing.pipeline.times().fusion_ms);
+    features_ms.push_back(sensing.pipeline.times().features_ms);
+    const double share = static_cast<double>(map.count()) / static_cast<double>(figures.cells);
+    share_sum += share;
+    figures.forbidden_share_max = std::max(figures.forbidden_share_max, share);
+  }
+  figures.fusion_p50_ms = percentile(fusion_ms, 0.5);
+  figures.fusion_p99_ms = percentile(fusion_ms, 0.99);
+  figures.fusion_max_ms = percentile(fusion_ms, 1.0);
+  figures.features_p50_ms = percentile(features_ms, 0.5);
+  figures.forbidden_share_mean = frames > 0 ? share_sum / frames : 0.0;
+  return figures;
+}
+
+}  // namespace safecell

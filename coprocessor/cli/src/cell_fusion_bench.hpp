@@ -1,0 +1,36 @@
+#pragma once
+// `safecell bench --cell FILE`: the sensing pipeline's fusion on another cell's grid (such as a
+// 6 cm max-move, 16 million cells) against the default cell in the same run. Both run the demo's
+// frames from when the person walks in (rendered before the clock starts) through the real
+// pipeline, one thread, and report each frame's fusion time (robot removal, back-projection,
+// the camera vote, static obstacles): median, p99 and worst, with the ratio to the default cell.
+// Private to the CLI.
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+
+namespace safecell {
+
+struct CellFusionFigures {
+  std::string cell;         // the cell's name
+  std::uint32_t cells = 0;  // of its C-space grid
+  double m_max_m = 0.0;
+  double lut_bytes_per_camera = 0.0;  // LUT-2 with block levels and differences
+  bool tables_built = false;          // built by this run (false: from the cache)
+  double tables_build_s = 0.0;
+  int frames = 0;
+  double fusion_p50_ms = 0.0;
+  double fusion_p99_ms = 0.0;
+  double fusion_max_ms = 0.0;
+  double features_p50_ms = 0.0;
+  double forbidden_share_mean = 0.0;  // of the maps over the frames
+  double forbidden_share_max = 0.0;
+};
+
+// cell_path: empty for the default cell; lut_cache: empty for the default folder. Messages
+// (tables built, references) go to `log`.
+CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::string& lut_cache,
+                                      int frames, std::ostream& log);
+
+}  // namespace safecell
