@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The fine grid of the precision targets (issue 15): the default cell with a max-move of 6 cm
+# (16.5 million C-space cells). Builds its tables (timed, peak memory) and checks them against the
+# model on 2,000 cells, measures the fusion against the default cell on the demo's frames, and
+# validates it against the ground truth beside the default cell (same seeds). Writes the JSON
+# reports, the cell file and commands.tsv into docs/validation/fine-grid/; then
+#   python3 docs/validation_tables.py docs/validation DATE COMMIT > docs/validation.md
+# About 15 minutes on 2 cores and 9 GB of memory; run nothing else beside it (the build time is
+# one of the figures).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+safecell=${SAFECELL:-build/host/coprocessor/cli/safecell}
+out=docs/validation/fine-grid
+cache=$(mktemp -d /tmp/safecell-fine-grid.XXXX)
+trap 'rm -rf "$cache"' EXIT
+mkdir -p "$out"
+: > "$out/commands.tsv"
+
+cell="$out/cell.yaml"
+sed 's/^m_max_m: 0.18$/m_max_m: 0.06/' coprocessor/cell/default_cell.yaml > "$cell.tmp"
+grep -q '^m_max_m: 0.06$' "$cell.tmp" || { echo "the default cell's m_max_m line has changed" >&2; exit 1; }
+mv "$cell.tmp" "$cell"
+
+# run NAME ARGS...: `safecell ARGS --json` into NAME.json (atomically), its command (the cache
+# folder written CACHE) and seconds into commands.tsv. Exit 1 is a finding, not a failure here
+# (validate exits 1 when it missed a collision: threshold 3 does); anything else stops the script.
+run() {
+  local name=$1
+  shift
+  local start=$SECONDS
+  local status=0
+  echo "== $name: safecell $*" >&2
+  "$safecell" "$@" --json > "$out/$name.json.tmp" || status=$?
+  if [ "$status" -gt 1 ]; then exit "$status"; fi
+  mv "$out/$name.json.tmp" "$out/$name.json"
+  printf '%s\tsafecell %s\t%s\n' "$name" "${*//$cache/CACHE}" "$((SECONDS - start))" \
+    >> "$out/commands.tsv"
+}
+
+# The build, with its peak memory (GNU time's maximum resident set, KB) beside the report.
+/usr/bin/time -f '%M' -o "$out/build-peak-rss-kb.txt" \
+  "$safecell" luts build --cell "$cell" --out "$cache" --force --verify-cells 2000 --json \
+  > "$out/build.json.tmp"
+mv "$out/build.json.tmp" "$out/build.json"
+printf 'build\tsafecell luts build --cell %s --out CACHE --force --verify-cells 2000\t0\n' \
+  "$cell" >> "$out/commands.tsv"
+run bench bench --cell "$cell" --lut-cache "$cache" --frames 300
+for threshold in 2 3; do
+  run "validate-seed7-threshold-$threshold" validate --cell "$cell" --scenes 200 --seed 7 \
+    --camera-threshold "$threshold" --lut-cache "$cache"
+  run "default-validate-seed7-threshold-$threshold" validate --scenes 200 --seed 7 \
+    --camera-threshold "$threshold" --lut-cache "$cache"
+done
+run validate-seed11 validate --cell "$cell" --scenes 2000 --seed 11 --lut-cache "$cache"
