@@ -38,11 +38,13 @@ struct PixelTableMismatch {
 };
 
 struct PixelTableCheck {
-  std::size_t cells = 0;                             // sampled cells
-  std::uint64_t entries = 0;                         // entries decoded
-  std::uint64_t pairs = 0;                           // (entry, sampled cell) pairs compared
-  std::uint64_t mismatches = 0;                      // of them, wrong
-  std::vector<PixelTableMismatch> first_mismatches;  // at most kMaxReported, in table order
+  std::size_t cells = 0;         // sampled cells
+  std::uint64_t entries = 0;     // entries decoded
+  std::uint64_t pairs = 0;       // (entry, sampled cell) pairs compared
+  std::uint64_t mismatches = 0;  // of them, wrong
+  // At most kMaxReported, sorted in table order: the first each chunk of entries found (chunks
+  // run in parallel), not necessarily the table's first.
+  std::vector<PixelTableMismatch> first_mismatches;
   static constexpr std::size_t kMaxReported = 16;
 
   [[nodiscard]] bool passed() const { return mismatches == 0; }
