@@ -64,6 +64,12 @@ TEST(LiveReplaySource, AfterAStallTheCamerasPassOverTheSameFrames) {
   // Frames due more than kLateLimit_s ago were passed over, the same ones by both cameras.
   EXPECT_GE(first->passed_over(), 10U);
   EXPECT_EQ(first->passed_over(), second->passed_over());
+  // The set says so, and the acquirer counts it: the sets exposed are all accounted for.
+  EXPECT_EQ(after.frames[0].passed_over, first->passed_over());
+  EXPECT_EQ(after.frames[1].passed_over, second->passed_over());
+  EXPECT_EQ(start.frames[0].passed_over, 0U);
+  EXPECT_EQ(cameras.sets_acquired(), 2U);
+  EXPECT_EQ(cameras.sets_passed_over(), first->passed_over());
   EXPECT_EQ(frame_number(after.frames[0]), frame_number(after.frames[1]));
   EXPECT_DOUBLE_EQ(after.frames[0].exposure_s, after.frames[1].exposure_s);
 }

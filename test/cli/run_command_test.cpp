@@ -208,11 +208,17 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
     EXPECT_TRUE(fs::exists(out / "reference" / ("cam" + std::to_string(c) + ".png")));
   }
   const auto summary = nlohmann::json::parse(read_text(out / "run_summary.json"));
-  // Every set after the reference's five went through the pipeline to the controller, all four
-  // views known, but for those long due when the session opened: passed over, as a live
-  // camera's would have been.
-  EXPECT_LE(summary["cycles"].get<int>(), kSets - 5) << summary.dump(2);
-  EXPECT_GE(summary["cycles"].get<int>(), kSets - 5 - 15) << summary.dump(2);
+  // Every recorded set is accounted for: the reference's five, then each set either went
+  // through the pipeline to the controller, all four views known, or was passed over, as a live
+  // camera's would have been, because it was long due when the service got to it (the session
+  // opening; on a loaded machine, a slow cycle). The last set acquired found every camera
+  // stopped.
+  const int cycles = summary["cycles"].get<int>();
+  EXPECT_EQ(summary["sets_acquired"].get<int>(), 5 + cycles + 1) << summary.dump(2);
+  EXPECT_EQ(cycles + summary["sets_passed_over"].get<int>(), kSets - 5) << summary.dump(2);
+  // How many are passed over depends on the machine's load (36 of 55 went through under ASan
+  // beside another test); a service that passed over most of them would be broken.
+  EXPECT_GE(cycles, (kSets - 5) / 4) << summary.dump(2);
   EXPECT_EQ(summary["cycles_short_of_views"].get<int>(), 0);
   // Most cycles found the robot's pose at their exposure (replayed exposures on the clock of the
   // joint stream); on a loaded machine a late joint stream makes some cycles all forbidden, as

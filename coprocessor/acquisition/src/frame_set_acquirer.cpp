@@ -1,5 +1,6 @@
 #include "safecell/acquisition/frame_set_acquirer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 #include <set>
@@ -75,9 +76,12 @@ FrameSet FrameSetAcquirer::acquire() {
   FrameSet set;
   set.index = ++sets_;
   set.frames.reserve(sources_.size());
+  std::uint64_t passed_over = 0;
   for (std::size_t i = 0; i < sources_.size(); ++i) {
     set.frames.push_back(retrieve_one(i, grabbed[i], grab_times_s[i]));
+    passed_over = std::max(passed_over, set.frames.back().passed_over);
   }
+  sets_passed_over_ += passed_over;
   return set;
 }
 
@@ -97,6 +101,7 @@ CameraFrame FrameSetAcquirer::retrieve_one(std::size_t index, const HealthReport
   if (!frame.known()) return frame;
 
   frame.counter = ++counters_[index];
+  frame.passed_over = delivered.passed_over;
   if (delivered.exposure_s) {
     frame.exposure_s = *delivered.exposure_s;
     frame.stamp_source = StampSource::kBackend;

@@ -53,6 +53,7 @@ HealthReport LiveReplaySource::retrieve(SourceFrame& frame) {
     if (!recording_->grab().healthy()) break;  // the recording's end: this frame, late
     SourceFrame next;
     if (!recording_->retrieve(next).healthy() || !next.exposure_s) break;
+    next.passed_over = frame.passed_over + 1;
     frame = std::move(next);
     due_s = clock_->due_s(*frame.exposure_s);
     ++passed_over_;

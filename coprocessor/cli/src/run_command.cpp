@@ -203,9 +203,14 @@ struct RunFigures {
 };
 
 void write_run_summary(const fs::path& file, const RunFigures& figures, double seconds,
-                       const std::string& stopped_because, const CoprocessorLink& link) {
+                       const std::string& stopped_because, const FrameSetAcquirer& cameras,
+                       const CoprocessorLink& link) {
   nlohmann::ordered_json summary;
   summary["cycles"] = figures.cycles;
+  // Since the first set, the reference's included: a recording played live passes over the sets
+  // it fell behind on (a live camera would have overwritten them).
+  summary["sets_acquired"] = cameras.sets_acquired();
+  summary["sets_passed_over"] = cameras.sets_passed_over();
   summary["seconds"] = seconds;
   summary["all_forbidden_cycles"] = figures.all_forbidden_cycles;
   summary["all_forbidden_because"] = figures.all_forbidden_because;
@@ -392,7 +397,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   if (asked) service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
   if (incidents) figures.incidents = incidents->finish();
-  write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, link);
+  write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, cameras, link);
   out << "stopped: " << stopped_because
       << (asked ? "; the controller was asked to stop the robot\n"
                 : "; no session was open to ask the controller (its watchdog holds the robot)\n")

@@ -8,6 +8,7 @@
 // camera before it retrieves any. A source never throws from grab() or retrieve(): what goes
 // wrong comes back as a fault report naming the camera. Not thread-safe.
 
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -23,6 +24,9 @@ struct SourceFrame {
   // (media time of a video file, the sidecar CSV of an image folder, simulated time).
   std::optional<double> exposure_s;
   std::string origin;  // where the frame came from (a file), for error messages; may be empty
+  // Frames the source passed over since the one it delivered before this (a recording played
+  // live that fell behind its pace); 0 for a source that hands out every frame.
+  std::uint64_t passed_over = 0;
 };
 
 class CameraSource {

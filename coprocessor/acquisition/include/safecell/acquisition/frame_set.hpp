@@ -30,6 +30,8 @@ struct CameraFrame {
   double exposure_s = 0.0;
   StampSource stamp_source = StampSource::kGrabClock;
   HealthReport view;  // healthy(): the view is known; otherwise the cause, naming the camera
+  // Frames the camera's source passed over just before this one (SourceFrame::passed_over).
+  std::uint64_t passed_over = 0;
 
   [[nodiscard]] bool known() const { return view.healthy(); }
 };

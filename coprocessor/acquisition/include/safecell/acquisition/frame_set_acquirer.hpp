@@ -24,6 +24,10 @@ class FrameSetAcquirer {
 
   // The next frame set, one entry per source in the order given.
   FrameSet acquire();
+  // Sets acquired so far, and sets the sources passed over between them (per set, the most any
+  // of its cameras passed over): together every set the cameras exposed since the first.
+  [[nodiscard]] std::uint64_t sets_acquired() const { return sets_; }
+  [[nodiscard]] std::uint64_t sets_passed_over() const { return sets_passed_over_; }
 
  private:
   CameraFrame retrieve_one(std::size_t index, const HealthReport& grabbed, double grab_time_s);
@@ -31,6 +35,7 @@ class FrameSetAcquirer {
   std::vector<std::unique_ptr<CameraSource>> sources_;
   std::vector<std::uint64_t> counters_;
   std::uint64_t sets_ = 0;
+  std::uint64_t sets_passed_over_ = 0;
 };
 
 }  // namespace safecell
