@@ -37,6 +37,23 @@ SAFECELL_CPU_CLONES void and_words(std::uint64_t* __restrict to,
   for (; w < count; ++w) to[w] &= from[w];
 }
 
+SAFECELL_CPU_CLONES bool or_words_any(std::uint64_t* __restrict to,
+                                      const std::uint64_t* __restrict from, std::size_t count) {
+  std::uint64_t any[kBlock]{};
+  std::size_t w = 0;
+  for (; w + kBlock <= count; w += kBlock) {
+    for (std::size_t k = 0; k < kBlock; ++k) {
+      to[w + k] |= from[w + k];
+      any[k] |= from[w + k];
+    }
+  }
+  for (; w < count; ++w) {
+    to[w] |= from[w];
+    any[0] |= from[w];
+  }
+  return (any[0] | any[1] | any[2] | any[3]) != 0;
+}
+
 SAFECELL_CPU_CLONES bool any_missing(const std::uint64_t* set, const std::uint64_t* subset,
                                      std::size_t count) {
   std::uint64_t missing[kBlock]{};

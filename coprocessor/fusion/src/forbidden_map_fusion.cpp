@@ -9,27 +9,46 @@
 
 namespace safecell {
 
+bool or_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
+                 std::span<const std::uint64_t> mask,
+                 std::vector<std::vector<std::uint64_t>>& scratch, std::span<std::uint64_t> into,
+                 std::size_t block_words) {
+  if (threshold < 1) throw std::invalid_argument("camera threshold must be >= 1");
+  if (block_words == 0) throw std::invalid_argument("count_at_least: a block of no words");
+  const std::size_t levels = static_cast<std::size_t>(threshold);
+  const std::size_t words = into.size();
+  if (scratch.size() < levels) throw std::invalid_argument("count_at_least: too little scratch");
+  for (const auto set : sets) {
+    if (set.size() != words) throw std::invalid_argument("count_at_least: sets of other sizes");
+  }
+  if (!mask.empty() && mask.size() != words) {
+    throw std::invalid_argument("count_at_least: a mask of another size");
+  }
+  for (std::size_t k = 0; k < levels; ++k) scratch[k].resize(block_words);
+  bool any = false;
+  for (std::size_t first = 0; first < words; first += block_words) {
+    const std::size_t length = std::min(block_words, words - first);
+    for (std::size_t k = 0; k < levels; ++k) std::fill_n(scratch[k].begin(), length, 0);
+    for (const auto set : sets) {
+      const std::uint64_t* incoming = set.data() + first;
+      // Highest level first, so that each set adds at most one to a cell's count.
+      for (std::size_t k = levels; k-- > 1;) {
+        or_and_words(scratch[k].data(), scratch[k - 1].data(), incoming, length);
+      }
+      or_words(scratch[0].data(), incoming, length);
+    }
+    std::uint64_t* counted = scratch[levels - 1].data();
+    if (!mask.empty()) and_words(counted, mask.data() + first, length);
+    any = or_words_any(into.data() + first, counted, length) || any;
+  }
+  return any;
+}
+
 void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
                     std::vector<std::vector<std::uint64_t>>& scratch,
                     std::vector<std::uint64_t>& result) {
-  if (threshold < 1) throw std::invalid_argument("camera threshold must be >= 1");
-  const std::size_t levels = static_cast<std::size_t>(threshold);
-  const std::size_t words = result.size();
-  if (scratch.size() < levels) throw std::invalid_argument("count_at_least: too little scratch");
-  for (std::size_t k = 0; k < levels; ++k) {
-    if (scratch[k].size() != words) throw std::invalid_argument("count_at_least: scratch size");
-    std::fill(scratch[k].begin(), scratch[k].end(), 0);
-  }
-  for (const auto set : sets) {
-    if (set.size() != words) throw std::invalid_argument("count_at_least: sets of other sizes");
-    const std::uint64_t* incoming = set.data();
-    // Highest level first, so that each set adds at most one to a cell's count.
-    for (std::size_t k = levels; k-- > 1;) {
-      or_and_words(scratch[k].data(), scratch[k - 1].data(), incoming, words);
-    }
-    or_words(scratch[0].data(), incoming, words);
-  }
-  std::copy(scratch[levels - 1].begin(), scratch[levels - 1].end(), result.begin());
+  std::fill(result.begin(), result.end(), 0);
+  or_at_least(sets, threshold, {}, scratch, result);
 }
 
 CellSet observable_cells(const PixelToCellsTable& table) {
@@ -170,8 +189,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
   const std::size_t words = observable_lines_.front().lines().size();
   seen_lines_.assign(words, 0);
   at_least_.assign(static_cast<std::size_t>(settings.camera_threshold),
-                   std::vector<std::uint64_t>(words, 0));
-  part_critical_lines_.assign(words, 0);
+                   std::vector<std::uint64_t>(kAtLeastBlockWords, 0));
   critical_lines_.assign(words, 0);
   critical_ = CellSet(cells);
   forbidden_ = CellSet(cells);
@@ -351,16 +369,13 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
       camera_lines_.push_back(voting.lines());
     }
     if (!voted) continue;
-    // Counted in the line layout, so that only the result is packed.
-    count_at_least(camera_lines_, settings_.camera_threshold, at_least_, part_critical_lines_);
-    // With hidden votes some camera must see an obstacle through the part.
-    if (hidden_votes) {
-      and_words(part_critical_lines_.data(), seen_lines_.data(), part_critical_lines_.size());
-    }
+    // Counted in the line layout, so that only the result is packed. With hidden votes some
+    // camera must see an obstacle through the part.
     counts_.part_critical[part] =
-        std::any_of(part_critical_lines_.begin(), part_critical_lines_.end(),
-                    [](std::uint64_t word) { return word != 0; });
-    or_words(critical_lines_.data(), part_critical_lines_.data(), critical_lines_.size());
+        or_at_least(camera_lines_, settings_.camera_threshold,
+                    hidden_votes ? std::span<const std::uint64_t>(seen_lines_)
+                                 : std::span<const std::uint64_t>(),
+                    at_least_, critical_lines_);
   }
   observable_lines_.front().pack_lines(critical_lines_, critical_);
   forbidden_.words() = critical_.words();

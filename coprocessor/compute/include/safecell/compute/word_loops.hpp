@@ -18,6 +18,9 @@ void or_and_words(std::uint64_t* __restrict to, const std::uint64_t* __restrict 
 // to[w] &= from[w] for w < count.
 void and_words(std::uint64_t* __restrict to, const std::uint64_t* __restrict from,
                std::size_t count);
+// to[w] |= from[w] for w < count; returns whether some from[w] has a bit.
+bool or_words_any(std::uint64_t* __restrict to, const std::uint64_t* __restrict from,
+                  std::size_t count);
 // Whether some w < count has a bit of subset[w] that set[w] lacks.
 [[nodiscard]] bool any_missing(const std::uint64_t* set, const std::uint64_t* subset,
                                std::size_t count);
