@@ -62,15 +62,21 @@ std::size_t CellLines::add_strips_long_lines(const std::uint8_t* begin, const st
   while (true) {
     const std::uint32_t count = *at++;
     for (std::uint32_t k = 0; k < count; ++k) {
-      auto cell = static_cast<std::uint32_t>(read_leb128(at));
-      auto left = static_cast<std::uint32_t>(read_leb128(at));
+      const auto cell = static_cast<std::uint32_t>(read_short_leb128(at));
+      const auto last = cell + static_cast<std::uint32_t>(read_short_leb128(at)) - 1;
       std::uint64_t* const words = words_.data() + (line + k) * words_per_line_;
-      while (left > 0) {
-        const std::uint32_t part = std::min(left, 64 - cell % 64);
-        words[cell / 64] |= bit_run(cell % 64, part);
-        cell += part;
-        left -= part;
+      const std::uint32_t first_word = cell / 64;
+      const std::uint32_t last_word = last / 64;
+      const std::uint64_t from_first = kAll << (cell % 64);
+      const std::uint64_t to_last = kAll >> (63 - last % 64);
+      if (first_word == last_word) {
+        words[first_word] |= from_first & to_last;
+        continue;
       }
+      // The words between are wholly in the run: written, not read.
+      words[first_word] |= from_first;
+      for (std::uint32_t w = first_word + 1; w < last_word; ++w) words[w] = kAll;
+      words[last_word] |= to_last;
     }
     written += count;
     if (at == end) return written;

@@ -25,6 +25,12 @@ inline std::uint64_t read_leb128(const std::uint8_t*& at) {
   }
 }
 
+// The same, for values mostly below 128 (one byte): that case without a loop.
+inline std::uint64_t read_short_leb128(const std::uint8_t*& at) {
+  if (*at < 0x80U) return *at++;
+  return read_leb128(at);
+}
+
 // Reads one value of at most `max_bytes` bytes before `end` in its shortest form (no trailing
 // zero byte, so that a value below 128 is always one byte); false, with `at` unspecified, for
 // anything else.
