@@ -16,6 +16,28 @@ std::uint64_t bit_run(std::uint32_t first, std::uint32_t count) {
   return (kAll >> (64 - count)) << first;
 }
 
+// Appends runs of bits to an array of words, writing each word once as it fills.
+struct BitAppender {
+  std::uint64_t* out;
+  std::uint64_t word = 0;
+  std::uint32_t filled = 0;  // bits of `word` taken, below 64
+
+  // Appends the low `count` bits of `bits` (count 1..64; the bits above it zero).
+  void append(std::uint64_t bits, std::uint32_t count) {
+    word |= bits << filled;
+    filled += count;
+    if (filled < 64) return;
+    *out++ = word;
+    filled -= 64;
+    // The top `filled` bits of `bits` did not fit.
+    word = filled == 0 ? 0 : bits >> (count - filled);
+  }
+  // Writes the last word, when it holds any bits.
+  void finish() const {
+    if (filled != 0) *out = word;
+  }
+};
+
 }  // namespace
 
 CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
@@ -122,43 +144,26 @@ void CellLines::pack_lines(std::span<const std::uint64_t> lines, CellSet& cells)
   if (cells.cell_count() != levels_.cell_count || lines.size() != line_count() * words_per_line_) {
     throw std::invalid_argument("cell sets of different grids");
   }
-  std::uint64_t* const out = cells.words().data();
+  // Each line's bits are appended to a word that is written out whenever it fills: every word
+  // of `cells` is written once, none is read.
+  BitAppender packed{cells.words().data()};
   const std::uint32_t line_cells = levels_.line_cells;
   if (words_per_line_ == 1) {
-    // Each line's bits appended to a word that is written out whenever it fills: every word of
-    // `cells` is written once, no read.
     const std::uint64_t line_bits = bit_run(0, line_cells);
-    std::uint64_t word = 0;
-    std::uint32_t filled = 0;
-    std::size_t next = 0;
     for (std::size_t line = 0; line < line_count(); ++line) {
-      const std::uint64_t bits = lines[line] & line_bits;
-      word |= bits << filled;
-      filled += line_cells;
-      if (filled >= 64) {
-        out[next++] = word;
-        filled -= 64;
-        // The line's top `filled` bits did not fit.
-        word = filled == 0 ? 0 : bits >> (line_cells - filled);
+      packed.append(lines[line] & line_bits, line_cells);
+    }
+  } else {
+    for (std::size_t line = 0; line < line_count(); ++line) {
+      const std::uint64_t* in = lines.data() + line * words_per_line_;
+      for (std::uint32_t word = 0, left = line_cells; left > 0; ++word) {
+        const std::uint32_t count = std::min<std::uint32_t>(left, 64);
+        packed.append(in[word] & bit_run(0, count), count);
+        left -= count;
       }
     }
-    if (filled != 0) out[next] = word;
-    return;
   }
-  cells.clear();
-  for (std::size_t line = 0; line < line_count(); ++line) {
-    const std::uint64_t* in = lines.data() + line * words_per_line_;
-    std::size_t at = line * line_cells;
-    for (std::uint32_t word = 0, left = line_cells; left > 0; ++word) {
-      const std::uint32_t count = std::min<std::uint32_t>(left, 64);
-      const std::uint64_t bits = in[word] & bit_run(0, count);
-      // `bits` lands at bit `at`, over at most two words of the compact layout.
-      out[at / 64] |= bits << (at % 64);
-      if (at % 64 != 0 && at % 64 + count > 64) out[at / 64 + 1] |= bits >> (64 - at % 64);
-      at += count;
-      left -= count;
-    }
-  }
+  packed.finish();
 }
 
 }  // namespace safecell
