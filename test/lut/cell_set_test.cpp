@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "safecell/test/property.hpp"
@@ -63,6 +64,38 @@ TEST(CellSet, FillSetsExactlyTheCells) {
   set.clear();
   EXPECT_FALSE(set.any());
   EXPECT_EQ(set.next_set(0), 130U);
+}
+
+TEST(CellSet, AssignUnionIsTheUnionAndItsCount) {
+  test::PropertyRun run(100);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto cells = std::uniform_int_distribution<std::uint32_t>(1, 700)(run.rng());
+    CellSet a(cells);
+    CellSet b(cells);
+    std::vector<bool> expected(cells);
+    for (CellIndex c = 0; c < cells; ++c) {
+      const bool in_a = std::bernoulli_distribution(0.3)(run.rng());
+      const bool in_b = std::bernoulli_distribution(0.3)(run.rng());
+      if (in_a) a.set(c);
+      if (in_b) b.set(c);
+      expected[c] = in_a || in_b;
+    }
+    CellSet result(cells);
+    result.fill();  // whatever was there goes
+    const std::size_t count = result.assign_union(a, b);
+    const auto expected_count =
+        static_cast<std::size_t>(std::count(expected.begin(), expected.end(), true));
+    ASSERT_EQ(count, expected_count) << cells << " cells";
+    for (CellIndex c = 0; c < cells; ++c) {
+      ASSERT_EQ(result.test(c), expected[c]) << "cell " << c << " of " << cells;
+    }
+    // Into one of its own operands.
+    EXPECT_EQ(a.assign_union(a, b), expected_count) << cells << " cells";
+    EXPECT_EQ(a, result) << cells << " cells";
+  }
+  CellSet other(64);
+  CellSet mine(65);
+  EXPECT_THROW(mine.assign_union(mine, other), std::invalid_argument);
 }
 
 }  // namespace

@@ -63,6 +63,26 @@ CellSet& CellSet::operator|=(const CellSet& other) {
   return *this;
 }
 
+SAFECELL_CPU_CLONES std::size_t CellSet::assign_union(const CellSet& a, const CellSet& b) {
+  if (a.cell_count_ != cell_count_ || b.cell_count_ != cell_count_) {
+    throw std::invalid_argument("cell sets of different grids");
+  }
+  if (words_.empty()) return 0;
+  std::uint64_t* const to = words_.data();
+  const std::uint64_t* const from_a = a.words_.data();
+  const std::uint64_t* const from_b = b.words_.data();
+  std::size_t total = 0;
+  const std::size_t last = words_.size() - 1;
+  for (std::size_t w = 0; w < last; ++w) {
+    to[w] = from_a[w] | from_b[w];
+    total += static_cast<std::size_t>(std::popcount(to[w]));
+  }
+  to[last] = from_a[last] | from_b[last];
+  const std::uint32_t tail = cell_count_ % 64;
+  const std::uint64_t last_mask = tail == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << tail) - 1;
+  return total + static_cast<std::size_t>(std::popcount(to[last] & last_mask));
+}
+
 CellSet& CellSet::operator&=(const CellSet& other) {
   if (other.cell_count_ != cell_count_) throw std::invalid_argument("cell sets of different grids");
   for (std::size_t i = 0; i < words_.size(); ++i) words_[i] &= other.words_[i];

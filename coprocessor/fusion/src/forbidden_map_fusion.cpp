@@ -378,10 +378,8 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
                     at_least_, critical_lines_);
   }
   observable_lines_.front().pack_lines(critical_lines_, critical_);
-  forbidden_.words() = critical_.words();
-  forbidden_ |= luts_.static_cells;
   counts_.critical_cells = critical_.count();
-  counts_.forbidden_cells = forbidden_.count();
+  counts_.forbidden_cells = forbidden_.assign_union(critical_, luts_.static_cells);
   return forbidden_;
 }
 

@@ -42,6 +42,9 @@ class CellSet {
 
   CellSet& operator|=(const CellSet& other);
   CellSet& operator&=(const CellSet& other);
+  // This set becomes a | b in one pass (what fusion does each cycle: forbidden = critical |
+  // static); returns count() of the result. Throws std::invalid_argument for another grid.
+  std::size_t assign_union(const CellSet& a, const CellSet& b);
 
   [[nodiscard]] const std::vector<std::uint64_t>& words() const { return words_; }
   [[nodiscard]] std::vector<std::uint64_t>& words() { return words_; }
