@@ -207,7 +207,10 @@ void camera_votes_fine_grid(benchmark::State& state, std::size_t block_words) {
   std::mt19937_64 rng(15);
   std::vector<std::vector<std::uint64_t>> sets(4, std::vector<std::uint64_t>(kFineGridLineWords));
   for (auto& set : sets) {
-    for (auto& word : set) word = rng() & rng();  // a quarter of the cells
+    for (auto& word : set) {
+      const std::uint64_t half = rng();
+      word = half & rng();  // a quarter of the cells
+    }
   }
   const std::vector<std::span<const std::uint64_t>> views(sets.begin(), sets.end());
   std::vector<std::vector<std::uint64_t>> scratch(2);
