@@ -135,8 +135,12 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
   // Every slow-down or stop for a forbidden cell in the robot's way was explained with the map the
   // controller held, and that map did forbid the cell: never "not forbidden" (controller and
   // coprocessor would disagree on the cell) nor "no longer kept" (the views were lost).
+  // A slow-down may also be the protective separation's speed limit, which names no cell; on a
+  // loaded machine (under the sanitizers) late maps make the controller fault for most of the
+  // run and the slow-downs left are the separation's. Without faults the person's cells come in
+  // the robot's way.
   const auto& explanations = summary["stop_explanations"];
-  if (summary["slowdowns"].get<int>() > 0) {
+  if (summary["slowdowns"].get<int>() > 0 && summary["faults"].get<int>() == 0) {
     EXPECT_GE(explanations.size(), 1U) << run.err;
   }
   for (const auto& stop : explanations) {
