@@ -14,15 +14,15 @@ bool or_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int th
                  std::vector<std::vector<std::uint64_t>>& scratch, std::span<std::uint64_t> into,
                  std::size_t block_words) {
   if (threshold < 1) throw std::invalid_argument("camera threshold must be >= 1");
-  if (block_words == 0) throw std::invalid_argument("count_at_least: a block of no words");
+  if (block_words == 0) throw std::invalid_argument("or_at_least: a block of no words");
   const std::size_t levels = static_cast<std::size_t>(threshold);
   const std::size_t words = into.size();
-  if (scratch.size() < levels) throw std::invalid_argument("count_at_least: too little scratch");
+  if (scratch.size() < levels) throw std::invalid_argument("or_at_least: too little scratch");
   for (const auto set : sets) {
-    if (set.size() != words) throw std::invalid_argument("count_at_least: sets of other sizes");
+    if (set.size() != words) throw std::invalid_argument("or_at_least: sets of other sizes");
   }
   if (!mask.empty() && mask.size() != words) {
-    throw std::invalid_argument("count_at_least: a mask of another size");
+    throw std::invalid_argument("or_at_least: a mask of another size");
   }
   for (std::size_t k = 0; k < levels; ++k) scratch[k].resize(block_words);
   bool any = false;
@@ -42,13 +42,6 @@ bool or_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int th
     any = or_words_any(into.data() + first, counted, length) || any;
   }
   return any;
-}
-
-void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
-                    std::vector<std::vector<std::uint64_t>>& scratch,
-                    std::vector<std::uint64_t>& result) {
-  std::fill(result.begin(), result.end(), 0);
-  or_at_least(sets, threshold, {}, scratch, result);
 }
 
 CellSet observable_cells(const PixelToCellsTable& table) {

@@ -181,20 +181,13 @@ class ForbiddenMapFusion {
   FusionCounts counts_;
 };
 
-// The bits that at least `threshold` of the word arrays `sets` hold, into `result` (all of
-// result.size() words; scratch: at least `threshold` arrays, resized to kAtLeastBlockWords).
-// Word-parallel: at_least[k] |= at_least[k - 1] & set. Throws std::invalid_argument for sizes
-// that do not match or a threshold below 1.
-void count_at_least(const std::vector<std::span<const std::uint64_t>>& sets, int threshold,
-                    std::vector<std::vector<std::uint64_t>>& scratch,
-                    std::vector<std::uint64_t>& result);
-
 inline constexpr std::size_t kAtLeastBlockWords = 512;  // 4 KB per count level
 
-// ORs into `into` the bits that at least `threshold` of `sets` hold and `mask` holds too (every
-// bit when `mask` is empty); returns whether there were any. Same scratch and errors as
-// count_at_least (scratch resized to block_words), and a mask of another size or a block of 0
-// words is refused too.
+// ORs into `into` the bits that at least `threshold` of the word arrays `sets` hold and `mask`
+// holds too (every bit when `mask` is empty); returns whether there were any. Word-parallel:
+// at_least[k] |= at_least[k - 1] & set. scratch: at least `threshold` arrays, resized to
+// block_words, their contents ignored. Throws std::invalid_argument for a threshold below 1,
+// too little scratch, sets or a mask of another size than `into`, or a block of 0 words.
 //
 // It counts a block of `block_words` at a time, so that the counts stay in the first-level cache
 // and each array is read once from memory: on the 6 cm grid's 2.8 MB line sets, counting whole
