@@ -217,8 +217,9 @@ TEST_F(RunCommand, TheRecordingGoesToTheControllerAndItsEndIsAStopRequest) {
   EXPECT_EQ(summary["sets_acquired"].get<int>(), 5 + cycles + 1) << summary.dump(2);
   EXPECT_EQ(cycles + summary["sets_passed_over"].get<int>(), kSets - 5) << summary.dump(2);
   // How many are passed over depends on the machine's load (36 of 55 went through under ASan
-  // beside another test); a service that passed over most of them would be broken.
-  EXPECT_GE(cycles, (kSets - 5) / 4) << summary.dump(2);
+  // beside another test, 54 on an idle machine); the floor only catches a service that passes
+  // over nearly all of them, with room for a machine twice as loaded.
+  EXPECT_GE(cycles, (kSets - 5) / 8) << summary.dump(2);
   EXPECT_EQ(summary["cycles_short_of_views"].get<int>(), 0);
   // Most cycles found the robot's pose at their exposure (replayed exposures on the clock of the
   // joint stream); on a loaded machine a late joint stream makes some cycles all forbidden, as

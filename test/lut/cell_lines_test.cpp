@@ -84,6 +84,42 @@ TEST(CellLines, PackedStripsEqualTheirCells) {
   }
 }
 
+// Runs that begin or end on a word's edge, in lines of exactly one and two words and one cell
+// more: where the run writer and the packer change words (random draws rarely land there).
+TEST(CellLines, RunsOnWordEdgesPackToTheirCells) {
+  struct Run {
+    std::uint32_t first;
+    std::uint32_t end;  // one past the last cell
+  };
+  const Run runs[] = {{0, 64}, {63, 65}, {64, 128},  {0, 128}, {1, 127}, {127, 128},
+                      {0, 1},  {64, 65}, {128, 130}, {0, 130}, {63, 64}};
+  for (const std::uint32_t line_cells : {64U, 65U, 128U, 129U, 130U}) {
+    BoxAxes axes;
+    axes.count = 2;
+    axes.joint[0] = 0;
+    axes.joint[1] = 1;
+    axes.stride[0] = 1;
+    axes.stride[1] = line_cells;
+    axes.cells[0] = line_cells;
+    axes.cells[1] = 3;
+    const CellIndex cells = cell_count_of(axes);
+    for (const Run& run : runs) {
+      if (run.end > line_cells) continue;
+      for (CellIndex line = 0; line < 3; ++line) {
+        CellSet set(cells);
+        set.set_range(line * line_cells + run.first, line * line_cells + run.end);
+        CellLines lines(axes, cells);
+        add(lines, set, axes);
+        CellSet packed(cells);
+        packed.fill();
+        lines.pack_into(packed);
+        ASSERT_EQ(packed, set) << "lines of " << line_cells << " cells, run " << run.first << ".."
+                               << run.end - 1 << " in line " << line;
+      }
+    }
+  }
+}
+
 TEST(CellLines, ContainsIsTheSubsetRelation) {
   BoxAxes axes;
   axes.count = 2;

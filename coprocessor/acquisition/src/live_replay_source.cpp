@@ -52,7 +52,13 @@ HealthReport LiveReplaySource::retrieve(SourceFrame& frame) {
     // The recording's own grab, not this source's: passing over stays within the frame set.
     if (!recording_->grab().healthy()) break;  // the recording's end: this frame, late
     SourceFrame next;
-    if (!recording_->retrieve(next).healthy() || !next.exposure_s) break;
+    if (!recording_->retrieve(next).healthy() || !next.exposure_s) {
+      // A frame that could not be read (or has no time) is taken from the recording all the
+      // same: counted as passed over, so that the recording's sets stay accounted for.
+      ++frame.passed_over;
+      ++passed_over_;
+      break;
+    }
     next.passed_over = frame.passed_over + 1;
     frame = std::move(next);
     due_s = clock_->due_s(*frame.exposure_s);

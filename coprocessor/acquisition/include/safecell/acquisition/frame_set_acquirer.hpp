@@ -24,8 +24,10 @@ class FrameSetAcquirer {
 
   // The next frame set, one entry per source in the order given.
   FrameSet acquire();
-  // Sets acquired so far, and sets the sources passed over between them (per set, the most any
-  // of its cameras passed over): together every set the cameras exposed since the first.
+  // Sets acquired so far (those in which no camera delivered a frame included), and sets the
+  // sources passed over between them (per set, the most any of its cameras passed over). For
+  // a recording: sets acquired with a frame + sets passed over = the sets it holds, when read
+  // to its end.
   [[nodiscard]] std::uint64_t sets_acquired() const { return sets_; }
   [[nodiscard]] std::uint64_t sets_passed_over() const { return sets_passed_over_; }
 
