@@ -84,6 +84,51 @@ TEST(FeatureMask, RectanglesCoverTheMaskExactlyWithoutOverlap) {
   }
 }
 
+// The runs [first, last] of set cells in a row, cell by cell.
+std::vector<std::pair<int, int>> runs_of(const FeatureMask& mask, int row) {
+  std::vector<std::pair<int, int>> runs;
+  for (int c = 0; c < mask.columns(); ++c) {
+    if (!mask.test(c, row)) continue;
+    if (c > 0 && mask.test(c - 1, row)) {
+      runs.back().second = c;
+    } else {
+      runs.emplace_back(c, c);
+    }
+  }
+  return runs;
+}
+
+// A run continues the rectangle above only when the row above has a run of the same extent: so
+// there are as many rectangles as runs that do not. Rows repeated (as in silhouettes, unions of
+// rectangles) and appending after what `out` holds.
+TEST(FeatureMask, RectanglesMergeEveryRunWithTheSameRunAbove) {
+  test::PropertyRun run(300);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const int columns = i % 3 == 0 ? 64 : std::uniform_int_distribution<int>(1, 150)(run.rng());
+    const int rows = std::uniform_int_distribution<int>(1, 70)(run.rng());
+    FeatureMask mask = random_mask(run.rng(), columns, rows);
+    for (int r = 1; r < rows; ++r) {  // some rows copied from the one above
+      if (std::bernoulli_distribution(0.3)(run.rng())) {
+        std::copy_n(mask.row_words(r - 1), mask.words_per_row(), mask.row_words(r));
+      }
+    }
+    std::size_t starting_runs = 0;
+    for (int r = 0; r < rows; ++r) {
+      const auto above = r > 0 ? runs_of(mask, r - 1) : std::vector<std::pair<int, int>>{};
+      for (const auto& run_here : runs_of(mask, r)) {
+        if (std::find(above.begin(), above.end(), run_here) == above.end()) ++starting_runs;
+      }
+    }
+    const FeatureRect earlier{1, 2, 3, 4};
+    std::vector<FeatureRect> out{earlier};
+    mask.append_rectangles(out);
+    ASSERT_EQ(out.size(), starting_runs + 1) << columns << " x " << rows;
+    EXPECT_EQ(out.front(), earlier);
+    const std::vector<FeatureRect> rects = mask.rectangles();
+    EXPECT_TRUE(std::equal(rects.begin(), rects.end(), out.begin() + 1, out.end()));
+  }
+}
+
 TEST(FeatureMask, DilateEqualsGrowingEveryCellByHand) {
   test::PropertyRun run(100);
   for (int i = 0; i < run.iterations(); ++i) {

@@ -154,12 +154,27 @@ cv::Mat FeatureMask::to_image() const {
 }
 
 std::vector<FeatureRect> FeatureMask::rectangles() const {
-  std::vector<FeatureRect> done;
-  std::vector<FeatureRect> open;  // rectangles that reach the previous row
-  std::vector<FeatureRect> next;
+  std::vector<FeatureRect> rects;
+  append_rectangles(rects);
+  return rects;
+}
+
+void FeatureMask::append_rectangles(std::vector<FeatureRect>& out) const {
+  // Scratch per thread: the table build calls this for every C-space cell, part and camera, and
+  // fresh vectors each time cost more than the scan.
+  thread_local std::vector<FeatureRect> open;  // rectangles that reach the previous row
+  thread_local std::vector<FeatureRect> next;
+  open.clear();
+  const auto words_per_row = static_cast<std::size_t>(words_per_row_);
   for (int row = 0; row < rows_; ++row) {
-    next.clear();
     const std::uint64_t* words = row_words(row);
+    // A row like the one above (common in silhouettes, which are unions of rectangles): its runs
+    // are those of the open rectangles, each of which grows by this row.
+    if (row > 0 && std::equal(words, words + words_per_row, row_words(row - 1))) {
+      for (FeatureRect& rect : open) rect.row1 = static_cast<std::uint16_t>(row);
+      continue;
+    }
+    next.clear();
     // Runs of set bits, found a word at a time; a run may continue into the next word.
     int run_start = -1;
     const auto close_run = [&](int end) {
@@ -198,11 +213,10 @@ std::vector<FeatureRect> FeatureMask::rectangles() const {
       }
     }
     if (run_start >= 0) close_run(std::min(columns_, words_per_row_ * 64));
-    done.insert(done.end(), open.begin(), open.end());
+    out.insert(out.end(), open.begin(), open.end());  // those that end at the row above
     open.swap(next);
   }
-  done.insert(done.end(), open.begin(), open.end());
-  return done;
+  out.insert(out.end(), open.begin(), open.end());
 }
 
 void FeatureMask::check_same_shape(const FeatureMask& other) const {

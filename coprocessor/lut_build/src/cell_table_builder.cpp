@@ -28,9 +28,10 @@ std::vector<CellToPixelsTable> build_cell_to_pixels_tables(const CellTableBuild&
           for (auto& mask : masks) mask.clear();
           silhouettes(static_cast<CellIndex>(cell), masks);
           for (std::size_t table = 0; table < build.table_count; ++table) {
-            const auto rects = masks[table].rectangles();
-            out[table].counts.push_back(static_cast<std::uint32_t>(rects.size()));
-            out[table].rects.insert(out[table].rects.end(), rects.begin(), rects.end());
+            const std::size_t before = out[table].rects.size();
+            masks[table].append_rectangles(out[table].rects);
+            out[table].counts.push_back(
+                static_cast<std::uint32_t>(out[table].rects.size() - before));
           }
         }
         chunk_rects[chunk] = std::move(out);

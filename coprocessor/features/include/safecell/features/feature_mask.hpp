@@ -89,6 +89,8 @@ class FeatureMask {
   // The set cells as rectangles: runs of each row, merged with the run of the same extent in the
   // row above. Exact: their union is the mask, and they do not overlap.
   [[nodiscard]] std::vector<FeatureRect> rectangles() const;
+  // The same, appended to `out` (no allocation once `out` and this thread's scratch have grown).
+  void append_rectangles(std::vector<FeatureRect>& out) const;
 
   friend bool operator==(const FeatureMask&, const FeatureMask&) = default;
 
