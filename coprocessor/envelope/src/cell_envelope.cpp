@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
 
+#include "safecell/geometry/point_transform.hpp"
 #include "safecell/robot/kinematics.hpp"
 
 namespace safecell {
@@ -56,6 +58,52 @@ std::vector<Ball> without_covered_balls(std::vector<Ball> balls) {
   }
   return kept;
 }
+
+// A ball that holds `balls` (not empty): about the middle of their centres' bounding box.
+Ball bounding_ball(std::span<const Ball> balls) {
+  Eigen::Vector3d low = balls.front().centre_m;
+  Eigen::Vector3d high = low;
+  for (const Ball& ball : balls) {
+    low = low.cwiseMin(ball.centre_m);
+    high = high.cwiseMax(ball.centre_m);
+  }
+  Ball bound{(low + high) / 2.0, 0.0};
+  for (const Ball& ball : balls) {
+    bound.radius_m =
+        std::max(bound.radius_m, (ball.centre_m - bound.centre_m).norm() + ball.radius_m);
+  }
+  return bound;
+}
+
+// Balls per tail bound: a bound per few neighbouring balls stays tight along a long arm, and is
+// still several times cheaper to place than its balls.
+constexpr std::size_t kBallsPerTailBound = 8;
+
+// Bounds of groups of up to kBallsPerTailBound neighbouring balls: the balls ordered along the
+// longest side of their centres' bounding box, cut into groups in that order.
+std::vector<Ball> group_bounds(std::vector<Ball> balls) {
+  if (balls.empty()) return {};
+  Eigen::Vector3d low = balls.front().centre_m;
+  Eigen::Vector3d high = low;
+  for (const Ball& ball : balls) {
+    low = low.cwiseMin(ball.centre_m);
+    high = high.cwiseMax(ball.centre_m);
+  }
+  Eigen::Index longest = 0;
+  (high - low).maxCoeff(&longest);
+  std::stable_sort(balls.begin(), balls.end(), [longest](const Ball& a, const Ball& b) {
+    return a.centre_m(longest) < b.centre_m(longest);
+  });
+  std::vector<Ball> bounds;
+  for (std::size_t first = 0; first < balls.size(); first += kBallsPerTailBound) {
+    const std::size_t count = std::min(kBallsPerTailBound, balls.size() - first);
+    bounds.push_back(bounding_ball(std::span<const Ball>(balls).subspan(first, count)));
+  }
+  return bounds;
+}
+
+// Added to every tail bound, so that rounding in placing it never leaves a ball's edge outside.
+constexpr double kBoundMargin_m = 1e-6;
 
 }  // namespace
 
@@ -145,6 +193,43 @@ void CellEnvelope::make_tail_tables(std::size_t max_head_prefixes,
       tail_tables_[segment][suffix] = without_covered_balls(swept);
     }
   }
+  tail_bounds_.assign(segment_starts_.size(), std::vector<std::vector<Ball>>(suffixes));
+  for (std::size_t segment = 0; segment < segment_starts_.size(); ++segment) {
+    for (std::size_t suffix = 0; suffix < suffixes; ++suffix) {
+      tail_bounds_[segment][suffix] = group_bounds(tail_tables_[segment][suffix]);
+    }
+  }
+}
+
+bool CellEnvelope::tail_bounds(const GridCoords& coords, std::vector<Ball>& bounds) const {
+  bounds.clear();
+  if (tail_bounds_.empty()) return false;
+  const CellFrames& frames = frames_of(coords);
+  const std::size_t first_link = tail_body_ - 1;
+  // Up to 120 degrees (chord at most the radius), sweep() keeps every centre where it is, and a
+  // ball within R of the bound's centre has its distance from an axis within R of the centre's.
+  for (std::size_t k = 0; k < first_link; ++k) {
+    if (!frames.axes[k].prismatic && !(frames.axes[k].chord_per_radius <= 1.0)) return false;
+  }
+  const std::size_t suffix = suffix_of(coords);
+  for (const auto& segment : tail_bounds_) {
+    for (const Ball& local : segment[suffix]) {
+      Ball bound{transform_point(frames.poses[first_link], local.centre_m),
+                 local.radius_m + kBoundMargin_m};
+      for (std::size_t k = first_link; k-- > 0;) {
+        const JointAxis& axis = frames.axes[k];
+        if (axis.prismatic) {
+          bound.radius_m += axis.half_width;
+          continue;
+        }
+        const Eigen::Vector3d offset = bound.centre_m - axis.point;
+        const double from_axis = (offset - offset.dot(axis.direction) * axis.direction).norm();
+        bound.radius_m += axis.chord_per_radius * (from_axis + local.radius_m);
+      }
+      bounds.push_back(bound);
+    }
+  }
+  return true;
 }
 
 std::size_t CellEnvelope::segment_starting_at(std::size_t body) const {
@@ -199,7 +284,7 @@ void CellEnvelope::balls_of_bodies(const GridCoords& coords, std::size_t first_b
   const std::size_t suffix = suffix_of(coords);
   for (std::size_t segment = first_segment; segment < end_segment; ++segment) {
     for (const Ball& local : tail_tables_[segment][suffix]) {
-      Ball ball{pose * local.centre_m, local.radius_m};
+      Ball ball{transform_point(pose, local.centre_m), local.radius_m};
       for (std::size_t k = first_link; k-- > 0;) sweep(frames.axes[k], ball);
       balls.push_back(ball);
     }
@@ -234,7 +319,7 @@ void CellEnvelope::append_link_balls(const CellFrames& frames, std::size_t first
   }
   for (std::size_t link = std::max<std::size_t>(first_body, 1) - 1; link + 1 < end_body; ++link) {
     for (const auto& local : robot_balls_.links[link]) {
-      Ball ball{frames.poses[link] * local.centre_m, local.radius_m + padding_m_};
+      Ball ball{transform_point(frames.poses[link], local.centre_m), local.radius_m + padding_m_};
       for (std::size_t k = link + 1; k-- > lowest_joint;) sweep(frames.axes[k], ball);
       balls.push_back(ball);
     }

@@ -5,25 +5,36 @@
 #include <optional>
 #include <variant>
 
+#include "safecell/geometry/point_transform.hpp"
 #include "safecell/geometry/shape_bounds.hpp"
 
 namespace safecell {
 
 namespace {
 
+// Added to the bounding sphere of the quick rejection below, so that rounding there never turns
+// away a ball the exact test would take.
+constexpr double kRejectMargin_m = 1e-6;
+
 // An obstacle as the test per ball needs it: the pose inverted once (per ball, the inversion was
 // most of the stage's time), a box's half size or another shape's bounding radius.
 struct ObstacleTest {
-  explicit ObstacleTest(const PlacedShape& obstacle) : cell_to_local(obstacle.pose.inverse()) {
+  explicit ObstacleTest(const PlacedShape& obstacle)
+      : cell_to_local(obstacle.pose.inverse()), origin_m(obstacle.pose.translation()) {
     if (const auto* box = std::get_if<Box>(&obstacle.shape)) {
       half_size_m = box->size_m / 2.0;
+      bounding_radius = half_size_m->norm();
     } else {
       bounding_radius = bounding_radius_m(obstacle.shape);
     }
   }
 
   [[nodiscard]] bool reached_by(const Ball& ball) const {
-    const Eigen::Vector3d local = cell_to_local * ball.centre_m;
+    // Most balls are far from every obstacle: a ball that reaches the shape reaches its bounding
+    // sphere, so one farther from the sphere is turned away before the transform.
+    const double reach = ball.radius_m + bounding_radius + kRejectMargin_m;
+    if ((ball.centre_m - origin_m).squaredNorm() > reach * reach) return false;
+    const Eigen::Vector3d local = transform_point(cell_to_local, ball.centre_m);
     if (half_size_m) {
       const Eigen::Vector3d outside = (local.cwiseAbs() - *half_size_m).cwiseMax(0.0);
       return outside.norm() <= ball.radius_m;
@@ -32,8 +43,9 @@ struct ObstacleTest {
   }
 
   Eigen::Isometry3d cell_to_local;
+  Eigen::Vector3d origin_m;                    // the shape's origin, cell frame
   std::optional<Eigen::Vector3d> half_size_m;  // a box
-  double bounding_radius = 0.0;                // any other shape
+  double bounding_radius = 0.0;  // of the shape about its origin (a box's half diagonal)
 };
 
 }  // namespace
@@ -70,6 +82,7 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
       grid.cell_count(), 1024, threads,
       [&](std::size_t, std::size_t begin, std::size_t end) {
         std::vector<Ball> balls;
+        std::vector<Ball> bounds;
         std::vector<CellIndex> hits;
         for (std::size_t cell = begin; cell < end; ++cell) {
           const GridCoords coords = grid.coords_of(static_cast<CellIndex>(cell)).value();
@@ -77,7 +90,9 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
           for (std::size_t body = 0; body < cached_bodies && !hit; ++body) {
             hit = cached[body][envelope.prefix_of(coords, body)];
           }
-          if (!hit) {
+          // Most cells keep the robot far from every obstacle: their tail's bounds reach none,
+          // and its balls need not be made.
+          if (!hit && !(envelope.tail_bounds(coords, bounds) && !touches(bounds))) {
             envelope.balls_of_bodies(coords, cached_bodies, envelope.body_count(), balls);
             hit = touches(balls);
           }

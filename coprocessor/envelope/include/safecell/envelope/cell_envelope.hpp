@@ -79,6 +79,14 @@ class CellEnvelope {
   // Thread-safe. From the tail tables where the range begins and ends at segment bounds.
   void balls_of_bodies(const GridCoords& coords, std::size_t first_body, std::size_t end_body,
                        std::vector<Ball>& balls) const;
+  // For tests that most cells fail (a static obstacle far from most of the robot): balls that
+  // hold every ball balls_of_bodies gives the cell's tail, into `bounds` (cleared first). The tail
+  // tables' balls of each suffix are bounded once at construction, a few neighbours per bound;
+  // per cell each bound is placed and grown by the sweeps of joints k-1..0 as if its balls were
+  // at its far side: several times fewer operations than the balls. Returns false, `bounds` empty,
+  // when there are no tail tables or one of those joints' cells is wider than 120 degrees (a sweep
+  // may then move a ball's centre, which the bound does not follow). Thread-safe.
+  bool tail_bounds(const GridCoords& coords, std::vector<Ball>& bounds) const;
   // How many balls the tail tables hold in all (0 when there are none).
   [[nodiscard]] std::size_t tail_table_balls() const;
 
@@ -107,6 +115,8 @@ class CellEnvelope {
   std::vector<std::size_t> segment_starts_;
   // [segment][suffix]: in link (tail_body_ - 1)'s frame; empty when there are no tables.
   std::vector<std::vector<std::vector<Ball>>> tail_tables_;
+  // [segment][suffix]: balls that hold the balls of tail_tables_[segment][suffix], same frame.
+  std::vector<std::vector<std::vector<Ball>>> tail_bounds_;
 };
 
 }  // namespace safecell
