@@ -31,11 +31,22 @@ TEST_F(LutsCommand, BuildsOnceAndReportsSizes) {
   EXPECT_GT(report["bytes_per_camera"].get<double>(), 0.0);
   EXPECT_GT(report["compression_ratio"].get<double>(), 1.0);
   EXPECT_TRUE(fs::exists(report["file"].get<std::string>()));
+  // The stages' times: every stage ran, and together they are the build's time (give or take the
+  // fingerprint, computed before the build's clock starts).
+  double stages_s = 0.0;
+  for (const char* stage : {"lut1_silhouettes", "lut2_inversion", "static_obstacles"}) {
+    ASSERT_TRUE(report["stage_s"].contains(stage)) << report.dump();
+    EXPECT_GT(report["stage_s"][stage].get<double>(), 0.0) << stage;
+    stages_s += report["stage_s"][stage].get<double>();
+  }
+  const double build_s = report["build_s"].get<double>();
+  EXPECT_NEAR(stages_s, build_s, 0.25 + 0.1 * build_s) << report.dump();
 
   const auto second = test::safecell_cli(
       {"luts", "build", "--cell", cell_.string(), "--out", out.string(), "--json"});
   ASSERT_EQ(second.exit_code, 0) << second.err;
   EXPECT_FALSE(nlohmann::json::parse(second.out)["built"].get<bool>());
+  EXPECT_FALSE(nlohmann::json::parse(second.out).contains("stage_s"));
 
   const auto info = test::safecell_cli({"luts", "info", out.string()});
   ASSERT_EQ(info.exit_code, 0) << info.err;

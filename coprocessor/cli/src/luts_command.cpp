@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -34,6 +35,9 @@ constexpr double kPaperBytesPerCamera = 50e6;
 
 const char* const kStageNames[kLutBuildStages] = {"LUT-1 silhouettes", "LUT-2 inversion",
                                                   "static obstacles"};
+// The same stages as keys of the JSON report's stage_s.
+const char* const kStageKeys[kLutBuildStages] = {"lut1_silhouettes", "lut2_inversion",
+                                                 "static_obstacles"};
 
 std::string megabytes(std::uint64_t bytes) { return fixed(static_cast<double>(bytes) / 1e6, 2); }
 
@@ -204,14 +208,29 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
     fs::remove(lut_cache_file(folder, model_lut_fingerprint(cell, grid, lut_options)), ignored);
   }
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
+  // Where the build's time goes: the time up to each progress report (every 0.1 s or so, from
+  // this thread) counts to the stage it reports on. The stages take turns, one robot part at a
+  // time.
+  std::array<double, kLutBuildStages> stage_s{};
+  auto last_report = std::chrono::steady_clock::now();
   const CachedLuts luts = model_luts_cached(
-      cell, grid, lut_options, folder,
-      [&bar](int stage, double fraction) { bar.update(kStageNames[stage], fraction); });
+      cell, grid, lut_options, folder, [&](int stage, double fraction) {
+        const auto now = std::chrono::steady_clock::now();
+        stage_s.at(static_cast<std::size_t>(stage)) +=
+            std::chrono::duration<double>(now - last_report).count();
+        last_report = now;
+        bar.update(kStageNames[stage], fraction);
+      });
   bar.finish();
   if (!luts.note.empty()) err << luts.note << '\n';
   nlohmann::ordered_json report = summary_json(luts.file, read_lut_file_summary(luts.file));
   report["built"] = luts.built;
   report["build_s"] = luts.build_s;
+  if (luts.built) {
+    for (int stage = 0; stage < kLutBuildStages; ++stage) {
+      report["stage_s"][kStageKeys[stage]] = stage_s.at(static_cast<std::size_t>(stage));
+    }
+  }
   const bool agree = options.verify_cells == 0 ||
                      verify_tables(options, cell, grid, lut_options, luts.set, bar, report);
   const int exit_code = agree ? 0 : 1;
@@ -219,9 +238,17 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
     out << report.dump(2) << '\n';
     return exit_code;
   }
-  out << (luts.built ? "built in " + fixed(luts.build_s, 1) + " s: "
-                     : "already built (use --force to build again): ")
-      << luts.file.string() << "\n";
+  if (luts.built) {
+    out << "built in " + fixed(luts.build_s, 1) + " s (";
+    for (int stage = 0; stage < kLutBuildStages; ++stage) {
+      out << (stage > 0 ? ", " : "") << kStageNames[stage] << ' '
+          << fixed(stage_s.at(static_cast<std::size_t>(stage)), 1) << " s";
+    }
+    out << "): ";
+  } else {
+    out << "already built (use --force to build again): ";
+  }
+  out << luts.file.string() << "\n";
   print_summary(report, out);
   if (report.contains("verified")) print_verification(report["verified"], out);
   return exit_code;
