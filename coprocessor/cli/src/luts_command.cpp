@@ -213,8 +213,8 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
   // time.
   std::array<double, kLutBuildStages> stage_s{};
   auto last_report = std::chrono::steady_clock::now();
-  const CachedLuts luts = model_luts_cached(
-      cell, grid, lut_options, folder, [&](int stage, double fraction) {
+  const CachedLuts luts =
+      model_luts_cached(cell, grid, lut_options, folder, [&](int stage, double fraction) {
         const auto now = std::chrono::steady_clock::now();
         stage_s.at(static_cast<std::size_t>(stage)) +=
             std::chrono::duration<double>(now - last_report).count();
