@@ -208,9 +208,9 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
     fs::remove(lut_cache_file(folder, model_lut_fingerprint(cell, grid, lut_options)), ignored);
   }
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
-  // Where the build's time goes: the time up to each progress report (every 0.1 s or so, from
-  // this thread) counts to the stage it reports on. The stages take turns, one robot part at a
-  // time.
+  // Where the build's time goes: the time up to each progress report (from this thread; at most
+  // 0.1 s apart in LUT-1 and the static obstacles, once per band of feature rows in LUT-2) counts
+  // to the stage it reports on. The stages take turns, one robot part at a time.
   std::array<double, kLutBuildStages> stage_s{};
   auto last_report = std::chrono::steady_clock::now();
   const CachedLuts luts =

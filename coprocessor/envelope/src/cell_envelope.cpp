@@ -6,6 +6,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "safecell/geometry/point_transform.hpp"
 #include "safecell/robot/kinematics.hpp"
@@ -23,14 +24,18 @@ struct JointAxis {
   double chord_per_radius = 0.0;  // 2 sin(min(half_width, pi) / 2)
 };
 
+// The point of the joint's axis closest to `point` (base frame).
+Eigen::Vector3d foot_on_axis(const JointAxis& axis, const Eigen::Vector3d& point) {
+  return axis.point + (point - axis.point).dot(axis.direction) * axis.direction;
+}
+
 // Grows `ball` (base frame) so that it holds the ball turned or shifted by the joint.
 void sweep(const JointAxis& axis, Ball& ball) {
   if (axis.prismatic) {
     ball.radius_m += axis.half_width;
     return;
   }
-  const Eigen::Vector3d offset = ball.centre_m - axis.point;
-  const Eigen::Vector3d foot = axis.point + offset.dot(axis.direction) * axis.direction;
+  const Eigen::Vector3d foot = foot_on_axis(axis, ball.centre_m);
   const double r = (ball.centre_m - foot).norm();
   const double chord = axis.chord_per_radius * r;
   if (r < chord) {
@@ -59,14 +64,20 @@ std::vector<Ball> without_covered_balls(std::vector<Ball> balls) {
   return kept;
 }
 
-// A ball that holds `balls` (not empty): about the middle of their centres' bounding box.
-Ball bounding_ball(std::span<const Ball> balls) {
+// The corners of the bounding box of the balls' centres (balls not empty).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> centres_box(std::span<const Ball> balls) {
   Eigen::Vector3d low = balls.front().centre_m;
   Eigen::Vector3d high = low;
   for (const Ball& ball : balls) {
     low = low.cwiseMin(ball.centre_m);
     high = high.cwiseMax(ball.centre_m);
   }
+  return {low, high};
+}
+
+// A ball that holds `balls` (not empty): about the middle of their centres' bounding box.
+Ball bounding_ball(std::span<const Ball> balls) {
+  const auto [low, high] = centres_box(balls);
   Ball bound{(low + high) / 2.0, 0.0};
   for (const Ball& ball : balls) {
     bound.radius_m =
@@ -83,12 +94,7 @@ constexpr std::size_t kBallsPerTailBound = 8;
 // longest side of their centres' bounding box, cut into groups in that order.
 std::vector<Ball> group_bounds(std::vector<Ball> balls) {
   if (balls.empty()) return {};
-  Eigen::Vector3d low = balls.front().centre_m;
-  Eigen::Vector3d high = low;
-  for (const Ball& ball : balls) {
-    low = low.cwiseMin(ball.centre_m);
-    high = high.cwiseMax(ball.centre_m);
-  }
+  const auto [low, high] = centres_box(balls);
   Eigen::Index longest = 0;
   (high - low).maxCoeff(&longest);
   std::stable_sort(balls.begin(), balls.end(), [longest](const Ball& a, const Ball& b) {
@@ -207,7 +213,8 @@ bool CellEnvelope::tail_bounds(const GridCoords& coords, std::vector<Ball>& boun
   const CellFrames& frames = frames_of(coords);
   const std::size_t first_link = tail_body_ - 1;
   // Up to 120 degrees (chord at most the radius), sweep() keeps every centre where it is, and a
-  // ball within R of the bound's centre has its distance from an axis within R of the centre's.
+  // ball within R of the bound's centre (R: the bound's radius before the sweeps) has its
+  // distance from an axis within R of the centre's.
   for (std::size_t k = 0; k < first_link; ++k) {
     if (!frames.axes[k].prismatic && !(frames.axes[k].chord_per_radius <= 1.0)) return false;
   }
@@ -222,8 +229,7 @@ bool CellEnvelope::tail_bounds(const GridCoords& coords, std::vector<Ball>& boun
           bound.radius_m += axis.half_width;
           continue;
         }
-        const Eigen::Vector3d offset = bound.centre_m - axis.point;
-        const double from_axis = (offset - offset.dot(axis.direction) * axis.direction).norm();
+        const double from_axis = (bound.centre_m - foot_on_axis(axis, bound.centre_m)).norm();
         bound.radius_m += axis.chord_per_radius * (from_axis + local.radius_m);
       }
       bounds.push_back(bound);
