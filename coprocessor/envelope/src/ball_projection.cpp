@@ -60,6 +60,51 @@ SAFECELL_CPU_CLONES void tangent_ranges(const double (&transform)[3][4],
   }
 }
 
+// Per ball of a batch, the feature columns and rows its pixel box spans, before clipping: -1 for
+// an edge left of (above) the image, columns (rows) for one right of (below) it.
+struct CellRanges {
+  int col0[kBatch];
+  int col1[kBatch];
+  int row0[kBatch];
+  int row1[kBatch];
+};
+
+// From normalised image coordinates to feature cells, without lens distortion.
+struct PixelToCell {
+  double fx_px, cx_px, fy_px, cy_px;
+  double inverse_cell_width, inverse_cell_height;
+  double columns, rows;
+};
+
+// Pixel centres are integers: pixel column c covers u in [c - 0.5, c + 0.5), so feature column
+// floor((u + 0.5) / cell width), held to -1..columns before the conversion so that huge boxes (a
+// ball at the camera) convert safely. Not a number goes to the edge that widens the box (the
+// caller makes such a box the whole image). Branch-free, for the same reason as tangent_ranges.
+SAFECELL_CPU_CLONES void feature_cell_ranges(const TangentRanges& __restrict ranges,
+                                             const PixelToCell& scale,
+                                             CellRanges& __restrict cells) {
+  const auto low_edge = [](double px, double inverse, double count) {
+    const double cell = std::floor((px + 0.5) * inverse);
+    const double held = cell > -1.0 ? cell : -1.0;  // and NaN
+    return static_cast<int>(held < count ? held : count);
+  };
+  const auto high_edge = [](double px, double inverse, double count) {
+    const double cell = std::floor((px + 0.5) * inverse);
+    const double held = cell < count ? cell : count;  // and NaN
+    return static_cast<int>(held > -1.0 ? held : -1.0);
+  };
+  for (std::size_t i = 0; i < kBatch; ++i) {
+    cells.col0[i] =
+        low_edge(scale.fx_px * ranges.x0[i] + scale.cx_px, scale.inverse_cell_width, scale.columns);
+    cells.col1[i] = high_edge(scale.fx_px * ranges.x1[i] + scale.cx_px, scale.inverse_cell_width,
+                              scale.columns);
+    cells.row0[i] =
+        low_edge(scale.fy_px * ranges.y0[i] + scale.cy_px, scale.inverse_cell_height, scale.rows);
+    cells.row1[i] =
+        high_edge(scale.fy_px * ranges.y1[i] + scale.cy_px, scale.inverse_cell_height, scale.rows);
+  }
+}
+
 }  // namespace
 
 BallProjection::BallProjection(const PinholeCamera& camera, const FeatureGrid& grid)
@@ -97,10 +142,14 @@ inline std::optional<FeatureRect> BallProjection::cells_of(const PixelBox& box) 
     return FeatureRect{0, 0, static_cast<std::uint16_t>(grid_.columns() - 1),
                        static_cast<std::uint16_t>(grid_.rows() - 1)};
   }
-  const int col0 = cell_of(box.u0, inverse_cell_width_, grid_.columns());
-  const int col1 = cell_of(box.u1, inverse_cell_width_, grid_.columns());
-  const int row0 = cell_of(box.v0, inverse_cell_height_, grid_.rows());
-  const int row1 = cell_of(box.v1, inverse_cell_height_, grid_.rows());
+  return clipped(cell_of(box.u0, inverse_cell_width_, grid_.columns()),
+                 cell_of(box.v0, inverse_cell_height_, grid_.rows()),
+                 cell_of(box.u1, inverse_cell_width_, grid_.columns()),
+                 cell_of(box.v1, inverse_cell_height_, grid_.rows()));
+}
+
+inline std::optional<FeatureRect> BallProjection::clipped(int col0, int row0, int col1,
+                                                          int row1) const {
   if (col1 < 0 || row1 < 0 || col0 >= grid_.columns() || row0 >= grid_.rows()) return std::nullopt;
   return FeatureRect{static_cast<std::uint16_t>(std::max(col0, 0)),
                      static_cast<std::uint16_t>(std::max(row0, 0)),
@@ -121,13 +170,23 @@ void BallProjection::feature_rects(std::span<const Ball> balls_in_cell,
                                 std::to_string(rects.size()) + " rectangles");
   }
   const PixelBox whole_image{-1e9, -1e9, 1e9, 1e9};
+  const PixelToCell scale{intrinsics_.fx_px,
+                          intrinsics_.cx_px,
+                          intrinsics_.fy_px,
+                          intrinsics_.cy_px,
+                          inverse_cell_width_,
+                          inverse_cell_height_,
+                          static_cast<double>(grid_.columns()),
+                          static_cast<double>(grid_.rows())};
   Ball padded[kBatch];  // the last, partial batch; the rest are balls of radius 0
   TangentRanges ranges;
+  CellRanges cells;
   for (std::size_t first = 0; first < balls_in_cell.size(); first += kBatch) {
     const std::size_t count = std::min(kBatch, balls_in_cell.size() - first);
     const Ball* batch = balls_in_cell.data() + first;
     if (count < kBatch) batch = std::copy_n(batch, count, padded) - count;
     tangent_ranges(transform_, batch, ranges);
+    if (!distorted_) feature_cell_ranges(ranges, scale, cells);
     for (std::size_t i = 0; i < count; ++i) {
       std::optional<FeatureRect>& rect = rects[first + i];
       if (ranges.z_near[i] <= kNearPlane_m) {
@@ -135,10 +194,11 @@ void BallProjection::feature_rects(std::span<const Ball> balls_in_cell,
         continue;
       }
       if (!distorted_) {
-        rect = cells_of(PixelBox{intrinsics_.fx_px * ranges.x0[i] + intrinsics_.cx_px,
-                                 intrinsics_.fy_px * ranges.y0[i] + intrinsics_.cy_px,
-                                 intrinsics_.fx_px * ranges.x1[i] + intrinsics_.cx_px,
-                                 intrinsics_.fy_px * ranges.y1[i] + intrinsics_.cy_px});
+        if (std::isnan(ranges.x0[i] + ranges.x1[i] + ranges.y0[i] + ranges.y1[i])) {
+          rect = cells_of(whole_image);  // cannot happen for finite balls; be safe
+        } else {
+          rect = clipped(cells.col0[i], cells.row0[i], cells.col1[i], cells.row1[i]);
+        }
         continue;
       }
       const auto box = distorted_box(ranges.x0[i], ranges.y0[i], ranges.x1[i], ranges.y1[i]);

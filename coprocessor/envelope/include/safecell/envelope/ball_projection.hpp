@@ -37,6 +37,9 @@ class BallProjection {
   [[nodiscard]] std::optional<PixelBox> distorted_box(double x0, double y0, double x1,
                                                       double y1) const;
   [[nodiscard]] std::optional<FeatureRect> cells_of(const PixelBox& box) const;
+  // A box of feature columns col0..col1 and rows row0..row1 (-1 and columns/rows: beyond the
+  // image) clipped to the image; nullopt when it lies wholly outside.
+  [[nodiscard]] std::optional<FeatureRect> clipped(int col0, int row0, int col1, int row1) const;
 
   // Cell frame to camera frame, row by row: x, y, z = the rows applied to (x, y, z, 1).
   double transform_[3][4] = {};
