@@ -76,23 +76,26 @@ struct PixelToCell {
   double columns, rows;
 };
 
-// Pixel centres are integers: pixel column c covers u in [c - 0.5, c + 0.5), so feature column
-// floor((u + 0.5) / cell width), held to -1..columns before the conversion so that huge boxes (a
-// ball at the camera) convert safely. Not a number goes to the edge that widens the box (the
-// caller makes such a box the whole image). Branch-free, for the same reason as tangent_ranges.
+// The feature column (row) of a box edge at pixel coordinate px. Pixel centres are integers:
+// pixel column c covers u in [c - 0.5, c + 0.5), so feature column floor((u + 0.5) / cell
+// width), held to -1..count before the conversion so that huge boxes (a ball at the camera)
+// convert safely; -1 and count mark "outside". Not a number goes to the edge that widens the box
+// (callers make such a box the whole image). Branch-free.
+inline int low_edge(double px, double inverse, double count) {
+  const double cell = std::floor((px + 0.5) * inverse);
+  const double held = cell > -1.0 ? cell : -1.0;  // and NaN
+  return static_cast<int>(held < count ? held : count);
+}
+inline int high_edge(double px, double inverse, double count) {
+  const double cell = std::floor((px + 0.5) * inverse);
+  const double held = cell < count ? cell : count;  // and NaN
+  return static_cast<int>(held > -1.0 ? held : -1.0);
+}
+
+// low_edge and high_edge of every ball of a batch at once, for the same reason as tangent_ranges.
 SAFECELL_CPU_CLONES void feature_cell_ranges(const TangentRanges& __restrict ranges,
                                              const PixelToCell& scale,
                                              CellRanges& __restrict cells) {
-  const auto low_edge = [](double px, double inverse, double count) {
-    const double cell = std::floor((px + 0.5) * inverse);
-    const double held = cell > -1.0 ? cell : -1.0;  // and NaN
-    return static_cast<int>(held < count ? held : count);
-  };
-  const auto high_edge = [](double px, double inverse, double count) {
-    const double cell = std::floor((px + 0.5) * inverse);
-    const double held = cell < count ? cell : count;  // and NaN
-    return static_cast<int>(held > -1.0 ? held : -1.0);
-  };
   for (std::size_t i = 0; i < kBatch; ++i) {
     cells.col0[i] =
         low_edge(scale.fx_px * ranges.x0[i] + scale.cx_px, scale.inverse_cell_width, scale.columns);
@@ -129,23 +132,16 @@ BallProjection::BallProjection(const PinholeCamera& camera, const FeatureGrid& g
 }
 
 inline std::optional<FeatureRect> BallProjection::cells_of(const PixelBox& box) const {
-  // Pixel centres are integers: pixel column c covers u in [c - 0.5, c + 0.5), so feature
-  // column floor((u + 0.5) / cell width). Clamped before the conversion, so that huge boxes
-  // (a ball at the camera) convert safely; -1 and columns() mark "outside".
-  const auto cell_of = [](double px, double inverse_size, int count) {
-    const double cell = (px + 0.5) * inverse_size;
-    if (cell < 0.0) return -1;
-    if (cell >= count) return count;
-    return static_cast<int>(cell);
-  };
+  const auto columns = static_cast<double>(grid_.columns());
+  const auto rows = static_cast<double>(grid_.rows());
   if (std::isnan(box.u0 + box.u1 + box.v0 + box.v1)) {  // cannot happen for finite balls; be safe
     return FeatureRect{0, 0, static_cast<std::uint16_t>(grid_.columns() - 1),
                        static_cast<std::uint16_t>(grid_.rows() - 1)};
   }
-  return clipped(cell_of(box.u0, inverse_cell_width_, grid_.columns()),
-                 cell_of(box.v0, inverse_cell_height_, grid_.rows()),
-                 cell_of(box.u1, inverse_cell_width_, grid_.columns()),
-                 cell_of(box.v1, inverse_cell_height_, grid_.rows()));
+  return clipped(low_edge(box.u0, inverse_cell_width_, columns),
+                 low_edge(box.v0, inverse_cell_height_, rows),
+                 high_edge(box.u1, inverse_cell_width_, columns),
+                 high_edge(box.v1, inverse_cell_height_, rows));
 }
 
 inline std::optional<FeatureRect> BallProjection::clipped(int col0, int row0, int col1,
