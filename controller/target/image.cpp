@@ -4,7 +4,7 @@
 // its text/data/bss sizes and the cycle's stack depth (from GCC's call graph) are what the
 // bare-metal build reports (cmake/ControllerImageReport.cmake). A real target replaces the ports
 // with its robot interface, its timer and its Ethernet driver.
-// Not in the image: the grid planner (its per-cell arrays, 1.7 MB on the default grid, are the
+// Not in the image: the grid planner (its per-cell arrays, 4.7 MB on the default grid, are the
 // host module's; a target runs gross motion with a planner on a partition it can afford).
 
 #include "safecell/base/freestanding_math.hpp"

@@ -9,6 +9,7 @@
 #include <deque>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "safecell/controller/host/planner_memory.hpp"
 #include "safecell/test/property.hpp"
@@ -63,21 +64,40 @@ bool one_step_apart(const CspaceGrid& grid, CellIndex a, CellIndex b) {
   return steps == 1;
 }
 
+// A random grid of 2 to 4 discretised joints, 10 % to 50 % of its cells forbidden.
+struct PlanCase {
+  CspaceGrid grid;
+  Words map;
+  double density = 0;
+  CellIndex start = 0;
+  CellIndex goal = 0;
+};
+
+PlanCase random_case(std::mt19937_64& rng) {
+  const CspaceGrid grid = small_grid(rng, 2 + static_cast<std::uint32_t>(rng() % 3));
+  const CellIndex cells = grid.cell_count();
+  Words map(cell_bits::words_for(cells), 0);
+  const double density = 0.1 + 0.4 * static_cast<double>(rng() % 100) / 100.0;
+  for (CellIndex c = 0; c < cells; ++c) {
+    if (static_cast<double>(rng() % 1000) < density * 1000) cell_bits::set(map.data(), c);
+  }
+  const auto start = static_cast<CellIndex>(rng() % cells);
+  const auto goal = static_cast<CellIndex>(rng() % cells);
+  return {grid, std::move(map), density, start, goal};
+}
+
 TEST(GridPlanner, FindsAPathExactlyWhenTheExhaustiveSearchDoes) {
   test::PropertyRun run(200);
   int found = 0;
   int none = 0;
   for (int i = 0; i < run.iterations(); ++i) {
-    auto& rng = run.rng();
-    const CspaceGrid grid = small_grid(rng, 2 + static_cast<std::uint32_t>(rng() % 3));
+    const PlanCase plan_case = random_case(run.rng());
+    const CspaceGrid& grid = plan_case.grid;
+    const Words& map = plan_case.map;
     const CellIndex cells = grid.cell_count();
-    Words map(cell_bits::words_for(cells), 0);
-    const double density = 0.1 + 0.4 * static_cast<double>(rng() % 100) / 100.0;
-    for (CellIndex c = 0; c < cells; ++c) {
-      if (static_cast<double>(rng() % 1000) < density * 1000) cell_bits::set(map.data(), c);
-    }
-    const auto start = static_cast<CellIndex>(rng() % cells);
-    const auto goal = static_cast<CellIndex>(rng() % cells);
+    const CellIndex start = plan_case.start;
+    const CellIndex goal = plan_case.goal;
+    const double density = plan_case.density;
     StoreReceiver store(cells, store_blocks_for(cells) * 2);
     hold(store, map, cells);
     const PlannerLayout layout = PlannerLayout::for_grid(cells);
@@ -88,6 +108,8 @@ TEST(GridPlanner, FindsAPathExactlyWhenTheExhaustiveSearchDoes) {
     input << "joints " << grid.joint_count() << ", cells " << cells << ", density " << density
           << ", start " << start << ", goal " << goal << ": " << to_string(result.status);
     const bool exists = reachable(grid, map, start, goal);
+    // The heuristic is consistent and a cell is queued once: no cell is taken off twice.
+    ASSERT_LE(result.expanded, cells) << input.str();
     if (!exists) {
       ++none;
       ASSERT_TRUE(result.status == PlanStatus::kNoPath ||
@@ -111,6 +133,34 @@ TEST(GridPlanner, FindsAPathExactlyWhenTheExhaustiveSearchDoes) {
   }
   EXPECT_GT(found, run.iterations() / 10);
   EXPECT_GT(none, run.iterations() / 10);
+}
+
+// Found by the property test (seed 1899188785, 4 joints, 4800 cells, 14 % forbidden): the open
+// cells of this search outgrow a heap of a quarter of the cells (the old default layout), so it
+// ran out of memory where a path exists. for_grid's heap holds every cell and finds it.
+TEST(GridPlanner, TheDefaultLayoutFindsWhatAQuarterHeapCouldNot) {
+  std::mt19937_64 rng(1899188785);
+  for (int i = 0; i < 200; ++i) {
+    const PlanCase plan_case = random_case(rng);
+    const CellIndex cells = plan_case.grid.cell_count();
+    if (cells != 4800 || plan_case.start != 3658 || plan_case.goal != 547) continue;
+    StoreReceiver store(cells, store_blocks_for(cells) * 2);
+    hold(store, plan_case.map, cells);
+    const PlannerLayout layout = PlannerLayout::for_grid(cells);
+    PlannerMemoryHost memory(layout);
+    GridPlanner planner(plan_case.grid, layout, memory.memory());
+    const PlanResult result = planner.plan(store.store().view(), plan_case.start, plan_case.goal);
+    EXPECT_EQ(result.status, PlanStatus::kFound) << to_string(result.status);
+    PlannerLayout quarter = layout;
+    quarter.heap_capacity = cells / 4;
+    PlannerMemoryHost quarter_memory(quarter);
+    GridPlanner cramped(plan_case.grid, quarter, quarter_memory.memory());
+    EXPECT_EQ(cramped.plan(store.store().view(), plan_case.start, plan_case.goal).status,
+              PlanStatus::kOutOfMemory)
+        << "the control: this search needs more than a quarter of the cells in its heap";
+    return;
+  }
+  FAIL() << "the recorded case is no longer among the first 200 of its seed";
 }
 
 TEST(GridPlanner, PrefersPathsAwayFromForbiddenCells) {
@@ -170,10 +220,19 @@ TEST(GridPlanner, SaysSoWhenTheGoalIsForbiddenOrMemoryRunsOut) {
   const PlanResult forbidden = planner.plan(store.store().view(), 0, cells - 1);
   EXPECT_EQ(forbidden.status, PlanStatus::kGoalForbidden);
   EXPECT_EQ(forbidden.blocking_cell, cells - 1);
-  layout.path_capacity = 2;
-  PlannerMemoryHost small(layout);
-  GridPlanner cramped(grid, layout, small.memory());
+  const PlanResult free_way = planner.plan(store.store().view(), 0, cells - 2);
+  ASSERT_EQ(free_way.status, PlanStatus::kFound);
+  ASSERT_GT(free_way.length, 3u);
+  PlannerLayout short_path = layout;
+  short_path.path_capacity = 2;
+  PlannerMemoryHost small(short_path);
+  GridPlanner cramped(grid, short_path, small.memory());
   EXPECT_EQ(cramped.plan(store.store().view(), 0, cells - 2).status, PlanStatus::kOutOfMemory);
+  PlannerLayout small_heap = layout;
+  small_heap.heap_capacity = 1;
+  PlannerMemoryHost tiny(small_heap);
+  GridPlanner crowded(grid, small_heap, tiny.memory());
+  EXPECT_EQ(crowded.plan(store.store().view(), 0, cells - 2).status, PlanStatus::kOutOfMemory);
 }
 
 }  // namespace

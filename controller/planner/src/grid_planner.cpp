@@ -33,7 +33,7 @@ GridPlanner::GridPlanner(const CspaceGrid& grid, const PlannerLayout& layout,
   SAFECELL_ASSERT(layout.cell_count == grid.cell_count() && layout.heap_capacity > 0 &&
                   layout.path_capacity > 1);
   SAFECELL_ASSERT(memory.cost != nullptr && memory.stamp != nullptr && memory.move != nullptr &&
-                  memory.heap != nullptr && memory.path != nullptr);
+                  memory.slot != nullptr && memory.heap != nullptr && memory.path != nullptr);
   for (CellIndex c = 0; c < layout.cell_count; ++c) memory_.stamp[c] = 0;
 }
 
@@ -58,22 +58,34 @@ std::uint32_t GridPlanner::entry_cost(const MapView& map, CellIndex cell,
   return kStepCost + config_.clearance_weight * forbidden_neighbours;
 }
 
-bool GridPlanner::push(PlannerHeapEntry entry) noexcept {
-  if (heap_size_ == layout_.heap_capacity) return false;
-  std::uint32_t at = heap_size_++;
+bool GridPlanner::queue(PlannerHeapEntry entry) noexcept {
+  std::uint32_t at = memory_.slot[entry.cell];
+  if (at == kNotQueued) {
+    if (heap_size_ == layout_.heap_capacity) return false;
+    at = heap_size_++;
+  }
+  // A queued cell only ever gets a lower priority (a cheaper way to it), so its entry moves up.
+  sift_up(at, entry);
+  return true;
+}
+
+void GridPlanner::sift_up(std::uint32_t at, PlannerHeapEntry entry) noexcept {
   while (at > 0) {
     const std::uint32_t parent = (at - 1) / 2;
     if (memory_.heap[parent].priority <= entry.priority) break;
     memory_.heap[at] = memory_.heap[parent];
+    memory_.slot[memory_.heap[at].cell] = at;
     at = parent;
   }
   memory_.heap[at] = entry;
-  return true;
+  memory_.slot[entry.cell] = at;
 }
 
 PlannerHeapEntry GridPlanner::pop() noexcept {
   const PlannerHeapEntry top = memory_.heap[0];
+  memory_.slot[top.cell] = kNotQueued;
   const PlannerHeapEntry last = memory_.heap[--heap_size_];
+  if (heap_size_ == 0) return top;
   std::uint32_t at = 0;
   for (;;) {
     std::uint32_t child = 2 * at + 1;
@@ -83,9 +95,11 @@ PlannerHeapEntry GridPlanner::pop() noexcept {
     }
     if (last.priority <= memory_.heap[child].priority) break;
     memory_.heap[at] = memory_.heap[child];
+    memory_.slot[memory_.heap[at].cell] = at;
     at = child;
   }
-  if (heap_size_ > 0) memory_.heap[at] = last;
+  memory_.heap[at] = last;
+  memory_.slot[last.cell] = at;
   return top;
 }
 
@@ -107,7 +121,8 @@ PlanResult GridPlanner::plan(const MapView& map, CellIndex start, CellIndex goal
   memory_.stamp[start] = search_;
   memory_.cost[start] = 0;
   memory_.move[start] = kNoMove;
-  (void)push({heuristic(grid_.coords_of(start).value(), goal_coords.value()), start});
+  memory_.slot[start] = kNotQueued;
+  (void)queue({heuristic(grid_.coords_of(start).value(), goal_coords.value()), start});
   CellIndex closest = start;
   std::uint32_t closest_h = heuristic(grid_.coords_of(start).value(), goal_coords.value());
   bool out_of_memory = false;
@@ -115,7 +130,6 @@ PlanResult GridPlanner::plan(const MapView& map, CellIndex start, CellIndex goal
     const PlannerHeapEntry entry = pop();
     const GridCoords coords = grid_.coords_of(entry.cell).value();
     const std::uint32_t h = heuristic(coords, goal_coords.value());
-    if (entry.priority > memory_.cost[entry.cell] + h) continue;  // a stale entry
     ++result.expanded;
     if (h < closest_h) {
       closest_h = h;
@@ -137,11 +151,16 @@ PlanResult GridPlanner::plan(const MapView& map, CellIndex start, CellIndex goal
         GridCoords next_coords = coords;
         next_coords.along[j] = direction == 0 ? coords.along[j] - 1 : coords.along[j] + 1;
         const std::uint32_t cost = memory_.cost[entry.cell] + entry_cost(map, next, next_coords);
-        if (memory_.stamp[next] == search_ && memory_.cost[next] <= cost) continue;
-        memory_.stamp[next] = search_;
+        if (memory_.stamp[next] == search_) {
+          if (memory_.cost[next] <= cost) continue;
+        } else {
+          memory_.stamp[next] = search_;
+          memory_.slot[next] = kNotQueued;
+        }
         memory_.cost[next] = cost;
         memory_.move[next] = static_cast<std::uint8_t>(2 * j + direction);
-        if (!push({cost + heuristic(next_coords, goal_coords.value()), next})) out_of_memory = true;
+        if (!queue({cost + heuristic(next_coords, goal_coords.value()), next}))
+          out_of_memory = true;
       }
     }
     if (out_of_memory) break;

@@ -6,9 +6,11 @@
 // next to c, so paths keep away from forbidden cells where they can; the heuristic (kStepCost
 // times the cells still to go along every joint) never overestimates, so a path is found whenever
 // one exists within the memory given.
-// Memory: the caller's, fixed at init (PlannerLayout: per cell a cost, a stamp and the move that
-// reached it; a heap; the path). A search that needs more heap or a longer path than the memory
-// holds ends with kOutOfMemory, never with a wrong answer.
+// Memory: the caller's, fixed at init (PlannerLayout: per cell a cost, a stamp, the move that
+// reached it and its place in the heap; a heap; the path). A cell is in the heap at most once (a
+// cheaper way to it lowers its entry in place), so a heap and a path of one entry per cell never
+// run out: PlannerLayout::for_grid gives those. A smaller layout may run out; the search then
+// ends with kOutOfMemory, never with a wrong answer.
 // Thread context: the controller's cycle or a lower-priority task of its own, never both at once.
 // Real-time: O(cells the search reaches * log heap); bounded by max_expansions per plan().
 
@@ -26,13 +28,13 @@ struct PlannerLayout {
   std::uint32_t path_capacity = 0;
 
   constexpr std::size_t bytes() const noexcept {
-    return std::size_t{cell_count} * 9 + std::size_t{heap_capacity} * 8 +
+    return std::size_t{cell_count} * 13 + std::size_t{heap_capacity} * 8 +
            std::size_t{path_capacity} * 4;
   }
-  // Heap for a quarter of the cells (at least 1024), paths up to 4096 cells.
+  // Room for every cell in the heap and on the path: such a plan never runs out of memory
+  // (25 bytes per cell; 4.7 MB for the default cell's 186,480 cells).
   static constexpr PlannerLayout for_grid(CellIndex cell_count) noexcept {
-    const std::uint32_t quarter = cell_count / 4;
-    return {cell_count, quarter < 1024 ? 1024 : quarter, 4096};
+    return {cell_count, cell_count, cell_count < 2 ? 2 : cell_count};
   }
 };
 
@@ -45,6 +47,7 @@ struct PlannerMemory {
   std::uint32_t* cost;     // cell_count: cost so far, valid where stamp == the search's
   std::uint32_t* stamp;    // cell_count: which search wrote cost and move (0: none yet)
   std::uint8_t* move;      // cell_count: the move that reached the cell (2 * joint + direction)
+  std::uint32_t* slot;     // cell_count: the cell's place in the heap, kNotQueued when not in it
   PlannerHeapEntry* heap;  // heap_capacity
   CellIndex* path;         // path_capacity
 };
@@ -79,6 +82,8 @@ struct PlanResult {
 class GridPlanner {
  public:
   static constexpr std::uint32_t kStepCost = 10;
+  static constexpr std::uint32_t kNotQueued =
+      0xFFFFFFFF;  // PlannerMemory::slot of a cell not queued
 
   GridPlanner(const CspaceGrid& grid, const PlannerLayout& layout, const PlannerMemory& memory,
               const PlannerConfig& config = {}) noexcept;
@@ -92,7 +97,9 @@ class GridPlanner {
   std::uint32_t heuristic(const GridCoords& from, const GridCoords& goal) const noexcept;
   std::uint32_t entry_cost(const MapView& map, CellIndex cell,
                            const GridCoords& coords) const noexcept;
-  bool push(PlannerHeapEntry entry) noexcept;
+  // Puts the cell in the heap, or lowers its entry there; false when the heap is full.
+  bool queue(PlannerHeapEntry entry) noexcept;
+  void sift_up(std::uint32_t at, PlannerHeapEntry entry) noexcept;
   PlannerHeapEntry pop() noexcept;
   void describe_block(const MapView& map, CellIndex closest, const GridCoords& goal,
                       PlanResult& result) const noexcept;

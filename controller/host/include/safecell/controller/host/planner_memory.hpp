@@ -15,19 +15,21 @@ class PlannerMemoryHost {
       : cost_(layout.cell_count),
         stamp_(layout.cell_count),
         move_(layout.cell_count),
+        slot_(layout.cell_count),
         heap_(layout.heap_capacity),
         path_(layout.path_capacity) {}
   PlannerMemoryHost(const PlannerMemoryHost&) = delete;
   PlannerMemoryHost& operator=(const PlannerMemoryHost&) = delete;
 
   PlannerMemory memory() {
-    return {cost_.data(), stamp_.data(), move_.data(), heap_.data(), path_.data()};
+    return {cost_.data(), stamp_.data(), move_.data(), slot_.data(), heap_.data(), path_.data()};
   }
 
  private:
   std::vector<std::uint32_t> cost_;
   std::vector<std::uint32_t> stamp_;
   std::vector<std::uint8_t> move_;
+  std::vector<std::uint32_t> slot_;
   std::vector<PlannerHeapEntry> heap_;
   std::vector<CellIndex> path_;
 };
