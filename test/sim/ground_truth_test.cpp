@@ -299,9 +299,10 @@ TEST(GroundTruth, SphereAgainstPlacedPrimitivesMatchesTheAnalyticDistance) {
       ++hit;
     }
   }
-  // Both outcomes are exercised.
-  EXPECT_GT(clear, run.iterations() / 10);
-  EXPECT_GT(hit, run.iterations() / 10);
+  if (run.full_length()) {  // both outcomes are exercised
+    EXPECT_GT(clear, run.iterations() / 10);
+    EXPECT_GT(hit, run.iterations() / 10);
+  }
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ PropertySettings& property_settings() {
 
 PropertyRun::PropertyRun(int default_iterations)
     : seed_(property_settings().seed),
+      default_iterations_(default_iterations),
       iterations_(property_settings().iterations > 0 ? property_settings().iterations
                                                      : default_iterations),
       rng_(seed_),

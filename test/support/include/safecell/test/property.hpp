@@ -30,10 +30,15 @@ class PropertyRun {
   explicit PropertyRun(int default_iterations);
   std::uint64_t seed() const { return seed_; }
   int iterations() const { return iterations_; }
+  // Whether the run is at least as long as the test's default. A test's coverage floors (enough
+  // random inputs reached the case it is about) are set for its default count; a short run that
+  // replays one failure (--iterations=1) skips them.
+  bool full_length() const { return iterations_ >= default_iterations_; }
   std::mt19937_64& rng() { return rng_; }
 
  private:
   std::uint64_t seed_;
+  int default_iterations_;
   int iterations_;
   std::mt19937_64 rng_;
   ::testing::ScopedTrace trace_;
