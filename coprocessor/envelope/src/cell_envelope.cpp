@@ -238,6 +238,26 @@ bool CellEnvelope::tail_bounds(const GridCoords& coords, std::vector<Ball>& boun
   return true;
 }
 
+void CellEnvelope::first_joint_motions(std::vector<Eigen::Isometry3d>& motions) const {
+  motions.clear();
+  const CellFrames& first = frames_of(GridCoords{});
+  const JointAxis axis = first.axes[0];
+  const double first_centre = first.q[0];
+  GridCoords coords;
+  for (std::uint32_t cell = 0; cell < grid_.cells_along(0); ++cell) {
+    coords.along[0] = cell;
+    // From the cell's own centre: the last cell ends exactly on the limit (cspace_grid.hpp).
+    const double offset = grid_.cell_centre(coords).value().rad[0] - first_centre;
+    if (axis.prismatic) {
+      motions.emplace_back(Eigen::Translation3d(offset * axis.direction));
+    } else {
+      motions.emplace_back(Eigen::Translation3d(axis.point) *
+                           Eigen::AngleAxisd(offset, axis.direction) *
+                           Eigen::Translation3d(-axis.point));
+    }
+  }
+}
+
 std::size_t CellEnvelope::segment_starting_at(std::size_t body) const {
   const auto found = std::find(segment_starts_.begin(), segment_starts_.end(), body);
   return static_cast<std::size_t>(found - segment_starts_.begin());

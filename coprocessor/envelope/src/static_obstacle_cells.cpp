@@ -16,6 +16,10 @@ namespace {
 // away a ball the exact test would take.
 constexpr double kRejectMargin_m = 1e-6;
 
+// Lines of joint-0 cells per chunk of work (a line of the default cell is 48 cells, of the 6 cm
+// grid 142).
+constexpr std::size_t kLinesPerChunk = 16;
+
 // An obstacle as the test per ball needs it: the pose inverted once (per ball, the inversion was
 // most of the stage's time), a box's half size or another shape's bounding radius.
 struct ObstacleTest {
@@ -61,10 +65,14 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
   CellSet cells(grid.cell_count());
   if (obstacles.empty()) return cells;
   const std::vector<ObstacleTest> tests(obstacles.begin(), obstacles.end());
-  const auto touches = [&tests](const std::vector<Ball>& balls) {
+  const auto reaches_one = [&tests](const Ball& ball) {
+    return std::any_of(tests.begin(), tests.end(),
+                       [&](const ObstacleTest& test) { return test.reached_by(ball); });
+  };
+  // Whether one of the balls, moved by `motion` (CellEnvelope::moved_ball), reaches an obstacle.
+  const auto moved_reach = [&](const std::vector<Ball>& balls, const Eigen::Isometry3d& motion) {
     return std::any_of(balls.begin(), balls.end(), [&](const Ball& ball) {
-      return std::any_of(tests.begin(), tests.end(),
-                         [&](const ObstacleTest& test) { return test.reached_by(ball); });
+      return reaches_one(CellEnvelope::moved_ball(motion, ball));
     });
   };
   // The head's bodies are tested once per prefix (cell_envelope.hpp).
@@ -74,29 +82,47 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
     for (std::size_t prefix = 0; prefix < envelope.prefix_count(body); ++prefix) {
       std::vector<Ball> balls;
       envelope.append_body_balls(body, prefix, balls);
-      cached[body].push_back(touches(balls));
+      cached[body].push_back(std::any_of(balls.begin(), balls.end(), reaches_one));
     }
   }
+  // Cells are numbered with joint 0 fastest: a line is the cells of joint 0 with the other joints'
+  // cells the same. The tail's bounds and balls are made once per line, for its first cell, and
+  // moved to the others (CellEnvelope::first_joint_motions): the robot's pose is computed once
+  // per line instead of once or twice per cell.
+  std::vector<Eigen::Isometry3d> motions;
+  envelope.first_joint_motions(motions);
+  const std::uint32_t line_length = grid.cells_along(0);
   std::mutex cells_mutex;
   parallel_chunks(
-      grid.cell_count(), 1024, threads,
+      grid.cell_count() / line_length, kLinesPerChunk, threads,
       [&](std::size_t, std::size_t begin, std::size_t end) {
         std::vector<Ball> balls;
         std::vector<Ball> bounds;
         std::vector<CellIndex> hits;
-        for (std::size_t cell = begin; cell < end; ++cell) {
-          const GridCoords coords = grid.coords_of(static_cast<CellIndex>(cell)).value();
-          bool hit = false;
-          for (std::size_t body = 0; body < cached_bodies && !hit; ++body) {
-            hit = cached[body][envelope.prefix_of(coords, body)];
+        for (std::size_t line = begin; line < end; ++line) {
+          const auto first = static_cast<CellIndex>(line * line_length);
+          GridCoords coords = grid.coords_of(first).value();
+          const bool bounded = envelope.tail_bounds(coords, bounds);
+          bool balls_made = false;
+          for (std::uint32_t along = 0; along < line_length; ++along) {
+            coords.along[0] = along;
+            bool hit = false;
+            for (std::size_t body = 0; body < cached_bodies && !hit; ++body) {
+              hit = cached[body][envelope.prefix_of(coords, body)];
+            }
+            // Most cells keep the robot far from every obstacle: their tail's bounds reach none,
+            // and its balls need not be tested.
+            if (!hit && !(bounded && !moved_reach(bounds, motions[along]))) {
+              if (!balls_made) {
+                coords.along[0] = 0;
+                envelope.balls_of_bodies(coords, cached_bodies, envelope.body_count(), balls);
+                coords.along[0] = along;
+                balls_made = true;
+              }
+              hit = moved_reach(balls, motions[along]);
+            }
+            if (hit) hits.push_back(first + along);
           }
-          // Most cells keep the robot far from every obstacle: their tail's bounds reach none,
-          // and its balls need not be made.
-          if (!hit && !(envelope.tail_bounds(coords, bounds) && !touches(bounds))) {
-            envelope.balls_of_bodies(coords, cached_bodies, envelope.body_count(), balls);
-            hit = touches(balls);
-          }
-          if (hit) hits.push_back(static_cast<CellIndex>(cell));
         }
         const std::lock_guard lock(cells_mutex);
         for (const CellIndex cell : hits) cells.set(cell);

@@ -1,6 +1,8 @@
 #include "safecell/silhouettes/model_silhouettes.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -8,6 +10,22 @@
 
 namespace safecell {
 namespace {
+
+// Numbers the ModelSilhouettes objects (ModelSilhouettes::instance_).
+std::atomic<std::uint64_t> next_instance{1};
+
+// The balls of one line's first cell for one range of bodies, as one thread last made them.
+struct LineBalls {
+  std::uint64_t instance = 0;  // 0: none yet
+  CellIndex line_start = 0;    // the line's first cell
+  std::size_t first_body = 0;
+  std::size_t end_body = 0;
+  std::vector<Ball> balls;
+};
+
+// A thread's lines: one per range of bodies it asks for in turn (the build asks for one robot
+// part at a time; a caller that alternates parts finds each part's line here).
+constexpr std::size_t kLinesPerThread = 4;
 
 // The envelope of the cell's robot, after the checks (so that no argument touches a missing
 // robot before they ran).
@@ -55,6 +73,8 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
   parts_ = robot_parts(*cell.robot, options.parts);
   projections_.reserve(cell.cameras.size());
   for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
+  instance_ = next_instance.fetch_add(1);
+  envelope_.first_joint_motions(line_motions_);
   cached_bodies_ = envelope_.tail_body();  // the head, per prefix
   cached_.resize(cached_bodies_);
   std::vector<Ball> balls;
@@ -99,9 +119,8 @@ void ModelSilhouettes::add_bodies(CellIndex cell, BodyRange bodies, std::size_t 
   if (!coords.ok()) throw std::out_of_range("cell " + std::to_string(cell) + " outside the grid");
   const std::size_t end_body = std::min(bodies.end, envelope_.body_count());
   const std::size_t end_cached = std::min(end_body, cached_bodies_);
-  thread_local std::vector<Ball> balls;
-  envelope_.balls_of_bodies(coords.value(), std::max(bodies.first, cached_bodies_), end_body,
-                            balls);
+  const std::vector<Ball>& balls =
+      tail_balls(coords.value(), std::max(bodies.first, cached_bodies_), end_body);
   for (std::size_t camera = first_camera; camera < end_camera; ++camera) {
     FeatureMask& mask = masks[camera - first_camera];
     for (std::size_t body = bodies.first; body < end_cached; ++body) {
@@ -109,6 +128,39 @@ void ModelSilhouettes::add_bodies(CellIndex cell, BodyRange bodies, std::size_t 
     }
     add_ball_rects(projections_[camera], balls, mask);
   }
+}
+
+const std::vector<Ball>& ModelSilhouettes::tail_balls(const GridCoords& coords,
+                                                      std::size_t first_body,
+                                                      std::size_t end_body) const {
+  thread_local std::array<LineBalls, kLinesPerThread> lines;
+  thread_local std::size_t next_replaced = 0;
+  thread_local std::vector<Ball> moved;
+  GridCoords line_start = coords;
+  line_start.along[0] = 0;
+  const CellIndex start = grid_.index_of(line_start).value();
+  const auto same_bodies = [&](const LineBalls& line) {
+    return line.instance == instance_ && line.first_body == first_body && line.end_body == end_body;
+  };
+  auto found = std::find_if(lines.begin(), lines.end(), same_bodies);
+  if (found == lines.end()) {
+    found = lines.begin() + static_cast<std::ptrdiff_t>(next_replaced);
+    next_replaced = (next_replaced + 1) % kLinesPerThread;
+    found->instance = 0;
+  }
+  if (found->instance == 0 || found->line_start != start) {
+    envelope_.balls_of_bodies(line_start, first_body, end_body, found->balls);
+    found->instance = instance_;
+    found->line_start = start;
+    found->first_body = first_body;
+    found->end_body = end_body;
+  }
+  const Eigen::Isometry3d& motion = line_motions_[coords.along[0]];
+  moved.clear();
+  for (const Ball& ball : found->balls) {
+    moved.push_back(CellEnvelope::moved_ball(motion, ball));
+  }
+  return moved;
 }
 
 }  // namespace safecell

@@ -30,11 +30,13 @@
 // on its own. The tail tables are kept per segment of the tail, cut where a part begins: a ball
 // dropped as inside another is then only ever dropped for one of its own part.
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
 #include "safecell/cspace/cspace_grid.hpp"
 #include "safecell/envelope/robot_balls.hpp"
+#include "safecell/geometry/point_transform.hpp"
 #include "safecell/robot/robot_model.hpp"
 
 namespace safecell {
@@ -47,8 +49,9 @@ class CellEnvelope {
   // cell like the head.
   static constexpr std::size_t kMaxTailBalls = std::size_t{1} << 18;
   // Changes whenever the balls of a cell change (table fingerprints include it). 2: tail tables;
-  // 3: tail tables per part segment.
-  static constexpr std::uint32_t kMethodVersion = 3;
+  // 3: tail tables per part segment; 4: users move the tail along lines of joint-0 cells and
+  // grow it by 1e-9 m (first_joint_motions).
+  static constexpr std::uint32_t kMethodVersion = 4;
 
   // padding_m: added to every ball (calibration and model error). part_starts: the first body of
   // each part (ascending; body 0 implied), where the tail tables are cut. Bodies with at most
@@ -87,6 +90,20 @@ class CellEnvelope {
   // when there are no tail tables or one of those joints' cells is wider than 120 degrees (a sweep
   // may then move a ball's centre, which the bound does not follow). Thread-safe.
   bool tail_bounds(const GridCoords& coords, std::vector<Ball>& bounds) const;
+  // Joint 0 moves everything after it rigidly, about (or along) its own axis, which no joint
+  // moves; the sweeps keep their sizes under that motion (the axes of later joints move along,
+  // joint 0's own sweep depends only on the distance from its axis). So the balls of bodies 1..
+  // (all but the base) of a cell are those of the cell with joint 0 at its first cell and the
+  // other joints' cells the same, moved by motions[coords.along[0]]: one motion per cell of joint
+  // 0, into `motions` (cleared first). Equal up to rounding (about 1e-15 m per metre from the
+  // axis): moved_ball adds a margin far above it. Thread-safe.
+  void first_joint_motions(std::vector<Eigen::Isometry3d>& motions) const;
+  // The ball moved by one of first_joint_motions and grown by kMotionMargin_m, so that it holds
+  // the ball computed for the cell directly.
+  static constexpr double kMotionMargin_m = 1e-9;
+  [[nodiscard]] static Ball moved_ball(const Eigen::Isometry3d& motion, const Ball& ball) {
+    return Ball{transform_point(motion, ball.centre_m), ball.radius_m + kMotionMargin_m};
+  }
   // How many balls the tail tables hold in all (0 when there are none).
   [[nodiscard]] std::size_t tail_table_balls() const;
 

@@ -11,6 +11,8 @@
 // Per robot part (robot_parts.hpp): the build takes each part's silhouette on its own, for the
 // vote per part; robot removal takes the whole robot's, the union of the parts'.
 
+#include <Eigen/Geometry>
+#include <cstdint>
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
@@ -53,6 +55,12 @@ class ModelSilhouettes final : public RobotSilhouettes {
   // first_camera..end_camera-1.
   void add_bodies(CellIndex cell, BodyRange bodies, std::size_t first_camera,
                   std::size_t end_camera, FeatureMask* masks) const;
+  // The balls of bodies first_body..end_body-1 (first_body >= 1) of the cell: those of its line's
+  // first cell (joint 0 at its first cell), made once per line and thread, moved along the line
+  // (CellEnvelope::first_joint_motions). The builds go through the cells in order, so most cells
+  // find their line's balls made. The reference is the calling thread's, valid until its next call.
+  const std::vector<Ball>& tail_balls(const GridCoords& coords, std::size_t first_body,
+                                      std::size_t end_body) const;
 
   std::vector<RobotPart> parts_;
   CspaceGrid grid_;
@@ -61,6 +69,9 @@ class ModelSilhouettes final : public RobotSilhouettes {
   std::vector<BallProjection> projections_;
   std::size_t cached_bodies_ = 0;
   std::vector<std::vector<std::vector<FeatureMask>>> cached_;  // [body][prefix][camera]
+  std::vector<Eigen::Isometry3d> line_motions_;                // per cell of joint 0
+  // Tells this object's lines from another's in a thread's store of them (tail_balls).
+  std::uint64_t instance_ = 0;
 };
 
 // Checks the options as ModelSilhouettes does (for callers that validate early).
