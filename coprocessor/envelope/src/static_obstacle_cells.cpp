@@ -103,7 +103,7 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
           const auto first = static_cast<CellIndex>(line * line_length);
           GridCoords coords = grid.coords_of(first).value();
           const bool bounded = envelope.tail_bounds(coords, bounds);
-          bool balls_made = false;
+          envelope.balls_of_bodies(coords, cached_bodies, envelope.body_count(), balls);
           for (std::uint32_t along = 0; along < line_length; ++along) {
             coords.along[0] = along;
             bool hit = false;
@@ -113,12 +113,6 @@ CellSet static_obstacle_cells(const CellEnvelope& envelope,
             // Most cells keep the robot far from every obstacle: their tail's bounds reach none,
             // and its balls need not be tested.
             if (!hit && !(bounded && !moved_reach(bounds, motions[along]))) {
-              if (!balls_made) {
-                coords.along[0] = 0;
-                envelope.balls_of_bodies(coords, cached_bodies, envelope.body_count(), balls);
-                coords.along[0] = along;
-                balls_made = true;
-              }
               hit = moved_reach(balls, motions[along]);
             }
             if (hit) hits.push_back(first + along);
