@@ -184,6 +184,15 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
   at_least_.assign(static_cast<std::size_t>(settings.camera_threshold),
                    std::vector<std::uint64_t>(kAtLeastBlockWords, 0));
   critical_lines_.assign(words, 0);
+  for (std::size_t part = 0; part < luts.parts.size(); ++part) {
+    camera_lines_.clear();
+    for (std::size_t camera = 0; camera < cameras; ++camera) {
+      camera_lines_.push_back(observable_lines_[slot(part, camera)].lines());
+    }
+    votable_lines_.emplace_back(words, 0);
+    or_at_least(camera_lines_, settings.camera_threshold, {}, at_least_, votable_lines_.back());
+  }
+  camera_lines_.clear();
   critical_ = CellSet(cells);
   forbidden_ = CellSet(cells);
   counts_.obstacle_pixels.assign(cameras, 0);
@@ -191,6 +200,7 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
   counts_.saturated.assign(luts.parts.size() * cameras, false);
   counts_.part_voted.assign(luts.parts.size(), false);
   counts_.part_critical.assign(luts.parts.size(), false);
+  counts_.part_covered.assign(luts.parts.size(), false);
 }
 
 CellSet ForbiddenMapFusion::suspicious(std::size_t part, std::size_t camera) const {
@@ -324,11 +334,15 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
   std::fill(critical_lines_.begin(), critical_lines_.end(), 0);
   const auto threshold = static_cast<std::size_t>(settings_.camera_threshold);
   const bool hidden_votes = settings_.hidden_votes;
+  bool any_critical = false;
   for (std::size_t part = 0; part < luts_.parts.size(); ++part) {
     const VoterCounts voters = find_voters(observations, part);
-    const bool voted = voters.seeing >= 1 && voters.voting >= threshold;
-    counts_.part_voted[part] = voted;
+    counts_.part_voted[part] = voters.seeing >= 1 && voters.voting >= threshold;
     counts_.part_critical[part] = false;
+    counts_.part_covered[part] =
+        counts_.part_voted[part] && any_critical &&
+        !any_missing(critical_lines_.data(), votable_lines_[part].data(), critical_lines_.size());
+    const bool voted = counts_.part_voted[part] && !counts_.part_covered[part];
     camera_lines_.clear();
     if (hidden_votes) std::fill(seen_lines_.begin(), seen_lines_.end(), 0);
     for (std::size_t camera = 0; camera < observations.size(); ++camera) {
@@ -369,6 +383,7 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
                     hidden_votes ? std::span<const std::uint64_t>(seen_lines_)
                                  : std::span<const std::uint64_t>(),
                     at_least_, critical_lines_);
+    any_critical = any_critical || counts_.part_critical[part];
   }
   observable_lines_.front().pack_lines(critical_lines_, critical_);
   counts_.critical_cells = critical_.count();

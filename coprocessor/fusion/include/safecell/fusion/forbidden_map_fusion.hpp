@@ -19,6 +19,13 @@
 // the line layout (cell_lines.hpp), where the cameras are also counted; only the critical cells
 // are packed. A camera stops early once its set holds every cell it can see.
 //
+// The parts are voted on one after the other into one critical set. A part whose every cell
+// that `camera_threshold` cameras can see through it at all is critical already cannot add to
+// the set and is skipped (FusionCounts::part_covered). With someone close to the arm the upper
+// arm's vote often makes every cell critical; the forearm's back-projection after it, which the
+// skip saves, was about 80 % of those frames' time on the 6 cm grid (34 of the demo's 300 frames
+// there: 12-14 ms before, at most 5.7 ms with the skip).
+//
 // Counting is per camera, not per pixel: many pixels of one camera marking a cell still count
 // once. An unknown view counts as suspecting every cell the camera can see at all.
 //
@@ -78,6 +85,8 @@ struct FusionCounts {
   // whether it made any cell critical.
   std::vector<bool> part_voted;
   std::vector<bool> part_critical;
+  // Per part: voted on, but skipped, every cell it could make critical being critical already.
+  std::vector<bool> part_covered;
   std::size_t critical_cells = 0;
   std::size_t forbidden_cells = 0;
 };
@@ -161,6 +170,9 @@ class ForbiddenMapFusion {
   std::vector<FeatureMask> reach_;            // per part and camera: pixels with any cell
   std::vector<CellLines> suspicious_lines_;   // per part and camera, filled box by box
   std::vector<CellLines> observable_lines_;   // observable_ in the line layout
+  // Per part, in the full grid's line layout: the cells at least camera_threshold cameras can
+  // see through the part, the only ones its vote can make critical.
+  std::vector<std::vector<std::uint64_t>> votable_lines_;
   // Per camera, for the part being voted on: its obstacles reach the part, its hidden pixels
   // do, and it votes at all.
   std::vector<bool> seeing_;
