@@ -122,9 +122,10 @@ PlanResult GridPlanner::plan(const MapView& map, CellIndex start, CellIndex goal
   memory_.cost[start] = 0;
   memory_.move[start] = kNoMove;
   memory_.slot[start] = kNotQueued;
-  (void)queue({heuristic(grid_.coords_of(start).value(), goal_coords.value()), start});
+  const std::uint32_t start_h = heuristic(grid_.coords_of(start).value(), goal_coords.value());
+  (void)queue({start_h, start});
   CellIndex closest = start;
-  std::uint32_t closest_h = heuristic(grid_.coords_of(start).value(), goal_coords.value());
+  std::uint32_t closest_h = start_h;
   bool out_of_memory = false;
   while (heap_size_ > 0) {
     const PlannerHeapEntry entry = pop();

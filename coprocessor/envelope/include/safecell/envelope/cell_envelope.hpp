@@ -88,7 +88,10 @@ class CellEnvelope {
   // per cell each bound is placed and grown by the sweeps of joints k-1..0 as if its balls were
   // at its far side: several times fewer operations than the balls. Returns false, `bounds` empty,
   // when there are no tail tables or one of those joints' cells is wider than 120 degrees (a sweep
-  // may then move a ball's centre, which the bound does not follow). Thread-safe.
+  // may then move a ball's centre, which the bound does not follow). No grid that make_grid
+  // accepts has such cells (a discretised joint's l_i is at least m_max / 2, so its cells are at
+  // most 2 rad wide), so no test reaches that refusal: it keeps a later change to the grid from
+  // making the bounds wrong without a sign. Thread-safe.
   bool tail_bounds(const GridCoords& coords, std::vector<Ball>& bounds) const;
   // Joint 0 moves everything after it rigidly, about (or along) its own axis, which no joint
   // moves; the sweeps keep their sizes under that motion (the axes of later joints move along,
