@@ -332,7 +332,10 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
       << proxy.report_json() << "; detected: " << causes;
   if (faults.expected == LinkError::kNone) {
     EXPECT_EQ(detected.total(), 0u) << causes;
-    EXPECT_EQ(taken.size(), demo.maps.size());
+    // Every update applied: counted by the link itself. The maps this thread samples may miss
+    // one that a newer update replaced before the thread looked (a late thread on a loaded
+    // machine: 59 of 60 once in CI), which the store rightly does not keep.
+    EXPECT_EQ(controller.link().updates_applied(), demo.maps.size());
     EXPECT_EQ(taken.rbegin()->second, demo.maps.back().words());
   } else {
     EXPECT_GT(detected.count(faults.expected), 0u)
