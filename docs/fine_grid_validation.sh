@@ -7,35 +7,13 @@
 #   python3 docs/validation_tables.py docs/validation DATE COMMIT > docs/validation.md
 # About 15 minutes on 2 cores and 9 GB of memory; run nothing else beside it (the build time is
 # one of the figures).
-set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-safecell=${SAFECELL:-build/host/coprocessor/cli/safecell}
-out=docs/validation/fine-grid
-cache=$(mktemp -d /tmp/safecell-fine-grid.XXXX)
-trap 'rm -rf "$cache"' EXIT
-mkdir -p "$out"
-: > "$out/commands.tsv"
+source "$(dirname "${BASH_SOURCE[0]}")/validation_run.sh"
+validation_setup docs/validation/fine-grid safecell-fine-grid
 
 cell="$out/cell.yaml"
 sed 's/^m_max_m: 0.18$/m_max_m: 0.06/' coprocessor/cell/default_cell.yaml > "$cell.tmp"
 grep -q '^m_max_m: 0.06$' "$cell.tmp" || { echo "the default cell's m_max_m line has changed" >&2; exit 1; }
 mv "$cell.tmp" "$cell"
-
-# run NAME ARGS...: `safecell ARGS --json` into NAME.json (atomically), its command (the cache
-# folder written CACHE) and seconds into commands.tsv. Exit 1 is a finding, not a failure here
-# (validate exits 1 when it missed a collision: threshold 3 does); anything else stops the script.
-run() {
-  local name=$1
-  shift
-  local start=$SECONDS
-  local status=0
-  echo "== $name: safecell $*" >&2
-  "$safecell" "$@" --json > "$out/$name.json.tmp" || status=$?
-  if [ "$status" -gt 1 ]; then exit "$status"; fi
-  mv "$out/$name.json.tmp" "$out/$name.json"
-  printf '%s\tsafecell %s\t%s\n' "$name" "${*//$cache/CACHE}" "$((SECONDS - start))" \
-    >> "$out/commands.tsv"
-}
 
 # The build, with its peak memory (GNU time's maximum resident set, KB) beside the report.
 /usr/bin/time -f '%M' -o "$out/build-peak-rss-kb.txt" \

@@ -1,0 +1,30 @@
+# Sourced by the docs/*_validation.sh scripts (not run on its own): the shared set-up and `run`.
+# validation_setup OUT CACHE_PREFIX: strict mode, the repository root as working folder, `safecell`
+# (SAFECELL or the host build), `out` (created, its commands.tsv emptied) and a temporary table
+# cache `cache`, removed on exit.
+validation_setup() {
+  set -euo pipefail
+  cd "$(dirname "${BASH_SOURCE[0]}")/.."
+  safecell=${SAFECELL:-build/host/coprocessor/cli/safecell}
+  out=$1
+  cache=$(mktemp -d "/tmp/$2.XXXX")
+  trap 'rm -rf "$cache"' EXIT
+  mkdir -p "$out"
+  : > "$out/commands.tsv"
+}
+
+# run NAME ARGS...: `safecell ARGS --json` into NAME.json (atomically), its command (the cache
+# folder written CACHE) and seconds into commands.tsv. Exit 1 is a finding, not a failure here
+# (validate exits 1 when it missed a collision: threshold 3 does); anything else stops the script.
+run() {
+  local name=$1
+  shift
+  local start=$SECONDS
+  local status=0
+  echo "== $name: safecell $*" >&2
+  "$safecell" "$@" --json > "$out/$name.json.tmp" || status=$?
+  if [ "$status" -gt 1 ]; then exit "$status"; fi
+  mv "$out/$name.json.tmp" "$out/$name.json"
+  printf '%s\tsafecell %s\t%s\n' "$name" "${*//$cache/CACHE}" "$((SECONDS - start))" \
+    >> "$out/commands.tsv"
+}
