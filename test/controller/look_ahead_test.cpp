@@ -261,9 +261,10 @@ TEST(LookAhead, NeverLetsTheRobotSweepIntoAForbiddenCell) {
       ++lines_alone_missed;
     }
   }
+  // Slowing down comes up about 8 times in 300 draws, none about once in 2,500 runs (seed 8787):
+  // NamesTheJointThatLimitsTheSpeed makes it happen instead of hoping for it here.
   if (run.full_length()) {
     EXPECT_GT(allowed, run.iterations() / 10) << "too few cases where the robot may move";
-    EXPECT_GT(slowed, 0) << "no case of slowing down";
     EXPECT_GT(lines_alone_missed, 0) << "the negative control was never caught";
   }
   std::printf("look-ahead: %d of %d allowed motion (%d slowed); lines alone missed %d\n", allowed,

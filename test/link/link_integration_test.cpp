@@ -332,11 +332,22 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
       << proxy.report_json() << "; detected: " << causes;
   if (faults.expected == LinkError::kNone) {
     EXPECT_EQ(detected.total(), 0u) << causes;
-    // Every update applied: counted by the link itself. The maps this thread samples may miss
-    // one that a newer update replaced before the thread looked (a late thread on a loaded
-    // machine: 59 of 60 once in CI), which the store rightly does not keep.
-    EXPECT_EQ(controller.link().updates_applied(), demo.maps.size());
+    // Every update applied, or refused for its base: counted by the link itself (the maps this
+    // thread samples may miss one that a newer update replaced before the thread looked). The
+    // coprocessor builds each update against the last version the controller acknowledged; an
+    // acknowledgement still on its way after the 10 ms poll leaves the next update built against
+    // the version before, which the controller has replaced (about 3 % of runs). The controller
+    // refuses that update, takes nothing from it, and the link repairs with a whole map.
+    const ControllerLink& received = controller.link();
+    EXPECT_EQ(received.updates_applied() + received.updates_refused(), demo.maps.size())
+        << received.updates_applied() << " applied, " << received.updates_refused() << " refused";
+    EXPECT_EQ(received.hash_mismatches(), 0u);
     EXPECT_EQ(taken.rbegin()->second, demo.maps.back().words());
+    // A receiver without checks takes a refused update on the wrong base (the negative control
+    // below); with none refused it must take every map right.
+    if (received.updates_refused() == 0) {
+      EXPECT_EQ(wrong_maps(controller.naive().taken()), 0u);
+    }
   } else {
     EXPECT_GT(detected.count(faults.expected), 0u)
         << faults.name << ": expected " << to_string(faults.expected) << ", detected: " << causes
@@ -347,9 +358,6 @@ TEST_P(LinkUnderFaults, EveryMapTheControllerTakesIsTheOneSent) {
   if (std::string(faults.name) == "everything") {
     EXPECT_GT(wrong_maps(controller.naive().taken()), 0u)
         << "a receiver without checks took no wrong map: the check could not fail";
-  }
-  if (std::string(faults.name) == "none") {
-    EXPECT_EQ(wrong_maps(controller.naive().taken()), 0u);
   }
   if (std::string(faults.name) == "cut") {
     EXPECT_TRUE(controller.saw_block(LinkBlock::kMapTooOld))

@@ -89,7 +89,9 @@ TEST(EntryZones, EveryConfigurationWithinSOfTheDoorIsAStaticObstacleCell) {
   without.config.entries.reset();
   const LutSet allowing = build_model_luts(with_entry_zones_forbidden(without), grid);
   const GroundTruth door({opening_of(cell.config, cell.config.entries->front())});
-  test::PropertyRun run(1200);
+  // About 3.7 % of the draws come within s of the door: 2400 give about 89 (1200 gave 30 or
+  // fewer about once in 80 runs, seed 63).
+  test::PropertyRun run(2400);
   int near = 0, static_with = 0, static_without = 0, far_free = 0;
   for (int i = 0; i < run.iterations(); ++i) {
     std::vector<double> q(grid.joint_count());
@@ -111,10 +113,12 @@ TEST(EntryZones, EveryConfigurationWithinSOfTheDoorIsAStaticObstacleCell) {
         << "q = [" << q[0] << ", " << q[1] << ", " << q[2] << ", " << q[3] << ", " << q[4] << ", "
         << q[5] << "], " << distance << " m from the door";
   }
-  EXPECT_GT(near, 30) << "the sample must reach towards the door";
-  EXPECT_GT(far_free, 0) << "the zone must not forbid everything";
   EXPECT_EQ(static_with, near);
-  EXPECT_LT(static_without, near / 2) << "without entries named the door's side is free";
+  if (run.full_length()) {
+    EXPECT_GT(near, 30) << "the sample must reach towards the door";
+    EXPECT_GT(far_free, 0) << "the zone must not forbid everything";
+    EXPECT_LT(static_without, near / 2) << "without entries named the door's side is free";
+  }
 }
 
 }  // namespace

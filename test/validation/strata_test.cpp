@@ -96,7 +96,13 @@ TEST_F(StrataTest, BehindTheArmIsPartlyHiddenByItInMostScenes) {
   for (const auto& placed : scenes(SceneStratum::kBehindArm, run)) {
     hidden += cameras_hiding_human(placed.scene, BodyKind::kRobot) > 0 ? 1 : 0;
   }
-  EXPECT_GE(2 * hidden, run.iterations()) << hidden << " of " << run.iterations();
+  // About 9 scenes in 10 are (behind the arm; behind an obstacle more), so half of 12 fails
+  // about once in 10,000 runs; a replay of one scene is not "most".
+  if (run.full_length()) {
+    if (run.full_length()) {
+      EXPECT_GE(2 * hidden, run.iterations()) << hidden << " of " << run.iterations();
+    }
+  }
 }
 
 TEST_F(StrataTest, BehindAStaticObstacleIsPartlyHiddenByItInMostScenes) {
@@ -138,7 +144,9 @@ TEST_F(StrataTest, BoxesStandOnTheFloorAndOnTheWorkbench) {
       on_bench += std::abs(bottom_m - bench_top_m) < 2e-3 ? 1 : 0;
     }
   }
-  EXPECT_GT(on_bench, 0);
+  if (run.full_length()) {
+    EXPECT_GT(on_bench, 0);
+  }
 }
 
 TEST_F(StrataTest, UniformScenesHavePeopleAndAtMostTheBoxesAsked) {
