@@ -11,12 +11,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/validation_run.sh"
 validation_setup docs/validation/envelope safecell-envelope
 for grid in 64x64 176x144; do
   cell="$out/cell-12cm-$grid.yaml"
-  sed -e 's/^m_max_m: 0.18$/m_max_m: 0.12/' \
-    -e "s/^feature_grid: {columns: 64, rows: 64}$/feature_grid: {columns: ${grid%x*}, rows: ${grid#*x}}/" \
-    coprocessor/cell/default_cell.yaml > "$cell.tmp"
-  grep -q '^m_max_m: 0.12$' "$cell.tmp" && grep -q "^feature_grid: {columns: ${grid%x*}, rows: ${grid#*x}}$" "$cell.tmp" ||
-    { echo "the default cell's m_max_m or feature_grid line has changed" >&2; exit 1; }
-  mv "$cell.tmp" "$cell"
+  default_cell_with "$cell" "m_max_m: 0.12" "feature_grid: {columns: ${grid%x*}, rows: ${grid#*x}}"
   for threshold in 2 3; do
     run "validate-12cm-$grid-threshold-$threshold" validate --cell "$cell" --scenes 200 --seed 7 \
       --camera-threshold "$threshold" --lut-cache "$cache"

@@ -10,11 +10,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/validation_run.sh"
 validation_setup docs/validation/feature-grid safecell-feature-grid
 for grid in 88x72 176x144; do
   cell="$out/cell-$grid.yaml"
-  sed "s/^feature_grid: {columns: 64, rows: 64}$/feature_grid: {columns: ${grid%x*}, rows: ${grid#*x}}/" \
-    coprocessor/cell/default_cell.yaml > "$cell.tmp"
-  grep -q "^feature_grid: {columns: ${grid%x*}, rows: ${grid#*x}}$" "$cell.tmp" ||
-    { echo "the default cell's feature_grid line has changed" >&2; exit 1; }
-  mv "$cell.tmp" "$cell"
+  default_cell_with "$cell" "feature_grid: {columns: ${grid%x*}, rows: ${grid#*x}}"
   for threshold in 2 3; do
     run "validate-$grid-threshold-$threshold" validate --cell "$cell" --scenes 200 --seed 7 \
       --camera-threshold "$threshold" --lut-cache "$cache"

@@ -28,3 +28,17 @@ run() {
   printf '%s\tsafecell %s\t%s\n' "$name" "${*//$cache/CACHE}" "$((SECONDS - start))" \
     >> "$out/commands.tsv"
 }
+
+# default_cell_with FILE LINE...: the default cell with each top-level LINE ("key: value") in place
+# of the line of its key, into FILE (atomically); stops when a key's line is not there.
+default_cell_with() {
+  local file=$1
+  shift
+  cp coprocessor/cell/default_cell.yaml "$file.tmp"
+  local line
+  for line in "$@"; do
+    sed -i "s/^${line%%:*}: .*\$/$line/" "$file.tmp"
+    grep -qxF "$line" "$file.tmp" || { echo "the default cell has no line '${line%%:*}: ...'" >&2; exit 1; }
+  done
+  mv "$file.tmp" "$file"
+}

@@ -621,12 +621,32 @@ def fine_grid_section():
     w("")
 
 
+def script_commands(subfolder):
+    """A script section's commands.tsv (commands, seconds), or None when it has not run."""
+    if not os.path.exists(os.path.join(folder, subfolder, "commands.tsv")):
+        return None
+    return read_commands(os.path.join(subfolder, "commands.tsv"))
+
+
+def commands_footer(commands, seconds):
+    w("Commands (seconds on this machine, run beside other work): " + "; ".join(
+        "`" + commands[name] + "` (" + n(seconds[name]) + ")" for name in commands) + ".")
+    w("")
+
+
+def needless_columns(r):
+    """colliding, missed, unseen, needless stops and its two causes among all clear."""
+    share = r["needless_stop_share"]
+    c = r["needless_stop_causes"]
+    return [n(r["colliding"]), n(r["missed"]), n(r["unseen"]), pct(share),
+            pct(share * c["visual_hull_share"]), pct(share * c["envelope_share"])]
+
+
 def feature_grid_section():
     """Finer feature cells (docs/feature_grid_validation.sh), when its reports are there."""
-    here = os.path.join(folder, "feature-grid")
-    if not os.path.exists(os.path.join(here, "commands.tsv")):
+    ran = script_commands("feature-grid")
+    if ran is None:
         return
-    commands, seconds = read_commands(os.path.join("feature-grid", "commands.tsv"))
     w("## Finer feature cells")
     w("")
     w("`bash docs/feature_grid_validation.sh`: the default cell with its images cut into finer "
@@ -660,17 +680,14 @@ def feature_grid_section():
       "narrows. The tables grow with the feature cells (LUT-2 per camera on the default grid: "
       "about 4.7 MB at 64 x 64, 25 MB at 176 x 144), and so does fusion's work per obstacle.")
     w("")
-    w("Commands (seconds on this machine, run beside other work): " + "; ".join(
-        "`" + commands[name] + "` (" + n(seconds[name]) + ")" for name in commands) + ".")
-    w("")
+    commands_footer(*ran)
 
 
 def envelope_section():
     """What the needless stops at threshold 2 are made of (docs/envelope_validation.sh)."""
-    here = os.path.join(folder, "envelope")
-    if not os.path.exists(os.path.join(here, "commands.tsv")):
+    ran = script_commands("envelope")
+    if ran is None:
         return
-    commands, seconds = read_commands(os.path.join("envelope", "commands.tsv"))
     w("## What the needless stops at threshold 2 are made of")
     w("")
     w("`bash docs/envelope_validation.sh`: the default cell with a max-move of 12 cm "
@@ -683,11 +700,8 @@ def envelope_section():
 
     def row(grid, features, threshold, change, name):
         r = report(name)
-        share = r["needless_stop_share"]
-        c = r["needless_stop_causes"]
-        return [grid, features, str(threshold), change, n(r["colliding"]), n(r["missed"]),
-                n(r["unseen"]), pct(share), pct(share * c["visual_hull_share"]),
-                pct(share * c["envelope_share"]), pct(r["forbidden_share"])]
+        return ([grid, features, str(threshold), change] + needless_columns(r) +
+                [pct(r["forbidden_share"])])
 
     rows = [
         row("18 cm", "64 x 64", 2, "", "fine-grid/default-validate-seed7-threshold-2"),
@@ -729,9 +743,7 @@ def envelope_section():
       "is not merged because it makes the table build's silhouette stage 2.7 times slower). "
       "The sweep's spheres are the larger slack and are not measured yet.")
     w("")
-    w("Commands (seconds on this machine, run beside other work): " + "; ".join(
-        "`" + commands[name] + "` (" + n(seconds[name]) + ")" for name in commands) + ".")
-    w("")
+    commands_footer(*ran)
 
 
 main_cells = 186480
