@@ -458,7 +458,21 @@ BENCH_NOTES = {
     "a938d7b": "the commit before the rows below, runs alternating with them",
     "5cffa82": "a part skipped when every cell it could make critical is critical already; "
                "runs alternating with the rows above",
+    "SERVED": "no map made where the protective separation stops the robot; both passes in "
+              "each run",
 }
+
+
+def bench_row(r):
+    """A bench-at report's 6 cm fusion, and as the service runs it where the report has that."""
+    text = (f"{r['cell']['fusion_p50_ms']:.2f} / {r['cell']['fusion_p99_ms']:.2f} / "
+            f"{r['cell']['fusion_max_ms']:.2f} ms (default cell: "
+            f"{r['baseline']['fusion_p99_ms']:.2f} ms p99)")
+    if "served_fusion_p99_ms" in r["cell"]:
+        c = r["cell"]
+        text += (f"; as served: {c['served_fusion_p50_ms']:.2f} / {c['served_fusion_p99_ms']:.2f}"
+                 f" / {c['served_fusion_max_ms']:.2f} ms, {c['frames_stopped']} frames stopped")
+    return text
 
 
 def build_time(build):
@@ -526,10 +540,7 @@ def fine_grid_section():
     ] + [
         ["the same at commit " + name.split("-")[2] + ", run " + name.split("-")[3] +
          " (" + BENCH_NOTES[name.split("-")[2]] + ")",
-         (lambda r: f"{r['cell']['fusion_p50_ms']:.2f} / {r['cell']['fusion_p99_ms']:.2f} / "
-                    f"{r['cell']['fusion_max_ms']:.2f} ms (default cell: "
-                    f"{r['baseline']['fusion_p99_ms']:.2f} ms p99)")(fine_report(name)),
-         "p99 <= 10 ms"]
+         bench_row(fine_report(name)), "p99 <= 10 ms"]
         for name in sorted((f[:-5] for f in os.listdir(fine) if f.startswith("bench-at-")),
                            key=lambda name: (list(BENCH_NOTES).index(name.split("-")[2]), name))
     ]))

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "model_fixture.hpp"
@@ -158,6 +159,18 @@ void expect_fusions_agree(PartSplit split) {
       EXPECT_FALSE(fast.counts().part_covered[part] && fast.counts().part_critical[part]);
       covered += fast.counts().part_covered[part] ? 1 : 0;
     }
+    // The map given up for a cycle (the separation stopped the robot), then made in two halves
+    // by the same engine: nothing of the skipped cycle may reach the next one.
+    const CellSet& all = fast.forbid_all();
+    EXPECT_EQ(all.count(), grid.cell_count());
+    EXPECT_FALSE(fast.critical().any());
+    EXPECT_EQ(fast.counts().critical_cells, 0U);
+    for (std::size_t part = 0; part < luts.parts.size(); ++part) {
+      EXPECT_FALSE(fast.counts().part_voted[part]);
+      EXPECT_FALSE(fast.suspicious(part, 0).any());
+    }
+    fast.remove_robot(observations, robot_cell);
+    ASSERT_EQ(fast.vote(observations), oracle) << "iteration " << i << ", in two halves";
   }
   if (run.full_length()) {
     EXPECT_GT(nonempty, run.iterations() / 3) << "the random scenes forbid too little to test";
@@ -237,6 +250,27 @@ TEST(FusionEquivalence, UnknownCameraMarksEverythingItCanSee) {
   expected |= luts.static_cells;
   EXPECT_EQ(fusion.fuse(observations, 0), expected);
   EXPECT_GT(fusion.observable(1).count(), grid.cell_count() / 2);
+}
+
+TEST(FusionEquivalence, AVoteNeedsThisCyclesRobotRemoval) {
+  const test::CoarseTables tables;
+  const LutSet& luts = tables.luts;
+  ForbiddenMapFusion fusion(luts, tables.silhouettes, FusionSettings{});
+  std::vector<CameraObservation> observations(luts.cameras.size());
+  for (auto& observation : observations) {
+    observation.known = true;
+    observation.blocked = FeatureMask(luts.columns, luts.rows);
+  }
+  EXPECT_THROW((void)fusion.vote(observations), std::logic_error) << "before any removal";
+  fusion.remove_robot(observations, 0);
+  EXPECT_EQ(fusion.vote(observations), luts.static_cells);
+  EXPECT_THROW((void)fusion.vote(observations), std::logic_error) << "a second vote on it";
+  fusion.remove_robot(observations, 0);
+  (void)fusion.forbid_all();
+  EXPECT_THROW((void)fusion.vote(observations), std::logic_error) << "after forbid_all";
+  EXPECT_THROW(fusion.remove_robot(observations, luts.static_cells.cell_count()),
+               std::out_of_range);
+  EXPECT_THROW((void)fusion.vote(observations), std::logic_error) << "after a refused removal";
 }
 
 TEST(FusionEquivalence, BadInputsAreRefused) {

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "model_fixture.hpp"
 #include "safecell/lut_build/model_luts.hpp"
@@ -137,6 +139,56 @@ TEST_F(SensingPipelineTest, ACameraExposedOutOfSyncCountsAsAnUnknownView) {
   EXPECT_EQ(sensing.out_of_sync_views(), 1u);
   EXPECT_FALSE(sensing.observations()[2].known);
   EXPECT_TRUE(set.frames[2].known()) << "the caller's frame set is left as it was";
+}
+
+// The service's pipeline skips the map when the protective separation stops the robot. That must
+// change nothing but the map of those frames, which must be every cell: the same frames through a
+// pipeline that makes every map give the same verdicts, and the same maps whenever the robot may
+// move.
+TEST_F(SensingPipelineTest, SkippingTheMapWhenTheSeparationStopsChangesNothingElse) {
+  test::PropertyRun run(16);
+  SensingPipeline fused = pipeline();
+  SensingPipeline skipping = pipeline();
+  skipping.skip_map_when_too_close(true);
+  ASSERT_NE(skipping.separation(), nullptr) << "the default cell checks the separation";
+  std::uniform_int_distribution<CellIndex> any_cell(0, grid_->cell_count() - 1);
+  std::uniform_real_distribution<double> across(-1.8, 1.8);
+  int stopped = 0;
+  int moving = 0;
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto q = test::configuration_in(*grid_, any_cell(run.rng()), run.rng());
+    HumanPose person;
+    person.position_m = {across(run.rng()), across(run.rng())};
+    if (i % 2 == 1) {
+      // Every other one in a corner, more than 2 m from the base, where the robot may often move.
+      person.position_m = {
+          std::copysign(1.5 + 0.3 * std::abs(person.position_m.x()) / 1.8, person.position_m.x()),
+          std::copysign(1.5 + 0.3 * std::abs(person.position_m.y()) / 1.8, person.position_m.y())};
+    }
+    std::string scene = "person at (" + std::to_string(person.position_m.x()) + ", " +
+                        std::to_string(person.position_m.y()) + "), q";
+    for (const double angle : q) scene += " " + std::to_string(angle);
+    SCOPED_TRACE(scene);
+    const auto frames =
+        sim_->render(SimScene{q, {person}}, 200U + static_cast<std::uint64_t>(i), 0.0);
+    const CellSet& full = fused.process(frames, q);
+    const CellSet& sent = skipping.process(frames, q);
+    const SeparationVerdict& verdict = fused.separation_verdict();
+    ASSERT_EQ(skipping.separation_verdict().too_close, verdict.too_close);
+    ASSERT_EQ(skipping.separation_verdict().speed_limit, verdict.speed_limit);
+    EXPECT_EQ(skipping.fusion().counts().obstacle_pixels, fused.fusion().counts().obstacle_pixels);
+    if (verdict.too_close) {
+      ++stopped;
+      EXPECT_EQ(sent.count(), grid_->cell_count()) << "a stop forbids every cell";
+    } else {
+      ++moving;
+      EXPECT_EQ(sent, full);
+    }
+  }
+  if (run.full_length()) {
+    EXPECT_GT(stopped, 0) << "no scene had someone close enough to stop the robot";
+    EXPECT_GT(moving, 0) << "every scene stopped the robot";
+  }
 }
 
 TEST_F(SensingPipelineTest, BadInputIsRefused) {

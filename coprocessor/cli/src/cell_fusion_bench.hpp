@@ -4,6 +4,8 @@
 // frames from when the person walks in (rendered before the clock starts) through the real
 // pipeline, one thread, and report each frame's fusion time (robot removal, back-projection,
 // the camera vote, static obstacles): median, p99 and worst, with the ratio to the default cell.
+// Twice: with every frame's map fused, and as the service runs them, where a frame in which the
+// protective separation stops the robot makes no map (every cell is forbidden then).
 // Private to the CLI.
 
 #include <cstdint>
@@ -23,6 +25,12 @@ struct CellFusionFigures {
   double fusion_p50_ms = 0.0;
   double fusion_p99_ms = 0.0;
   double fusion_max_ms = 0.0;
+  // As the service runs the frames (sensing_pipeline.hpp, skip_map_when_too_close), and how many
+  // frames the separation stopped the robot in.
+  double served_fusion_p50_ms = 0.0;
+  double served_fusion_p99_ms = 0.0;
+  double served_fusion_max_ms = 0.0;
+  int frames_stopped = 0;
   double features_p50_ms = 0.0;
   double forbidden_share_mean = 0.0;  // of the maps over the frames
   double forbidden_share_max = 0.0;

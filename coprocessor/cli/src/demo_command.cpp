@@ -98,12 +98,13 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   // The person comes in once the robot has done a few moves alone (the productivity baseline)
   // and leaves with time to spare for moves after.
   const DemoWorld world(sensing.cell, sensing.grid, 0.3 * options.seconds);
+  ControllerSessionSettings session_settings = real_time_session(
+      program, out_dir, options.fps, sensing.fusion.sync_error_s, sensing.reference.frames);
+  // The near-person figures show the map's free share beside the sent one: every map is made.
+  session_settings.maps_of_stopped_cycles = true;
   ControllerSession session(
       sensing.cell, sensing.grid, sensing.pipeline, sensing.luts.set.fingerprint,
-      demo_controller_setup(sensing.cell, sensing.grid, world),
-      real_time_session(program, out_dir, options.fps, sensing.fusion.sync_error_s,
-                        sensing.reference.frames),
-      err);
+      demo_controller_setup(sensing.cell, sensing.grid, world), session_settings, err);
   SensingService& service = session.service();
 
   const std::uint64_t start_ns = steady_now_ns();

@@ -60,6 +60,7 @@ ControllerSession::ControllerSession(const CellModel& cell, const CspaceGrid& gr
   service_settings_.widening_budget_m =
       removal_widening_m(*cell.robot, grid, 0.0, settings.sync_error_s).value_or(0.02);
   service_settings_.camera_threshold = static_cast<std::uint32_t>(cell.camera_threshold);
+  service_settings_.maps_of_stopped_cycles = settings.maps_of_stopped_cycles;
   open_link();
 }
 

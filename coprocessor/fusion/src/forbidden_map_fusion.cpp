@@ -206,6 +206,8 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
 CellSet ForbiddenMapFusion::suspicious(std::size_t part, std::size_t camera) const {
   const CellLines& lines = suspicious_lines_.at(slot(part, camera));
   CellSet cells(critical_.cell_count());
+  // After forbid_all the lines are the last vote's; no part was voted on since.
+  if (!counts_.part_voted.at(part)) return cells;
   lines.pack_lines(lines.lines(), cells);
   return cells;
 }
@@ -320,6 +322,13 @@ bool ForbiddenMapFusion::back_project(std::size_t part, std::size_t camera,
 
 const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& observations,
                                         CellIndex robot_cell, std::span<const double> q) {
+  remove_robot(observations, robot_cell, q);
+  return vote(observations);
+}
+
+void ForbiddenMapFusion::remove_robot(const std::vector<CameraObservation>& observations,
+                                      CellIndex robot_cell, std::span<const double> q) {
+  removed_ = false;
   check(observations);
   if (robot_cell >= critical_.cell_count()) {
     throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
@@ -331,6 +340,27 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
     counts_.obstacle_pixels[camera] = known ? obstacles_[camera].count() : std::size_t{0};
     counts_.hidden_pixels[camera] = known ? hidden_[camera].count() : std::size_t{0};
   }
+  removed_ = true;
+}
+
+const CellSet& ForbiddenMapFusion::forbid_all() {
+  removed_ = false;
+  std::fill(counts_.saturated.begin(), counts_.saturated.end(), false);
+  std::fill(counts_.part_voted.begin(), counts_.part_voted.end(), false);
+  std::fill(counts_.part_critical.begin(), counts_.part_critical.end(), false);
+  std::fill(counts_.part_covered.begin(), counts_.part_covered.end(), false);
+  critical_.clear();
+  forbidden_.fill();
+  counts_.critical_cells = 0;
+  counts_.forbidden_cells = forbidden_.count();
+  return forbidden_;
+}
+
+const CellSet& ForbiddenMapFusion::vote(const std::vector<CameraObservation>& observations) {
+  // The obstacles must be this cycle's: a vote on the last cycle's would be a silent wrong map.
+  if (!removed_) throw std::logic_error("fusion vote without robot removal this cycle");
+  removed_ = false;
+  check(observations);
   std::fill(critical_lines_.begin(), critical_lines_.end(), 0);
   const auto threshold = static_cast<std::size_t>(settings_.camera_threshold);
   const bool hidden_votes = settings_.hidden_votes;

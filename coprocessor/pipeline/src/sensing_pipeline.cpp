@@ -121,7 +121,7 @@ const CellSet& SensingPipeline::process(const std::vector<cv::Mat>& frames,
   }
   times_.features_ms = ms_since(start);
   const auto fusion_start = std::chrono::steady_clock::now();
-  const CellSet& forbidden = fusion_.fuse(observations_, robot_cell_, q);
+  fusion_.remove_robot(observations_, robot_cell_, q);
   verdict_ = SeparationVerdict{};
   if (separation_) {
     known_.resize(observations_.size());
@@ -132,6 +132,9 @@ const CellSet& SensingPipeline::process(const std::vector<cv::Mat>& frames,
     }
     verdict_ = separation_->check(q, known_, obstacles_);
   }
+  const CellSet& forbidden = skip_map_when_too_close_ && verdict_.too_close
+                                 ? fusion_.forbid_all()
+                                 : fusion_.vote(observations_);
   times_.fusion_ms = ms_since(fusion_start);
   return forbidden;
 }

@@ -31,6 +31,8 @@ SensingService::SensingService(const CspaceGrid& grid, SensingPipeline& pipeline
       all_forbidden_(grid.cell_count()),
       last_map_(&all_forbidden_) {
   all_forbidden_.fill();
+  // A too-close verdict sends all_forbidden_: the pipeline need not make the map then.
+  pipeline_.skip_map_when_too_close(!settings_.maps_of_stopped_cycles);
   link_.on_joint_state([this](const ReceivedJointState& received) {
     const v1::JointState& state = received.state;
     if (received.coprocessor_time_ns == 0) return;  // before the clock is synced

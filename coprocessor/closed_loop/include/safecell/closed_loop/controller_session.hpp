@@ -50,6 +50,9 @@ struct ControllerSessionSettings {
   // The LUT fingerprint written into the controller's file, when not the coprocessor's (a fault
   // campaign's controller commissioned with other tables: it must refuse the session).
   std::optional<std::uint64_t> controller_lut_fingerprint;
+  // The service's (sensing_service.hpp): make the pipeline's map also when the separation stops
+  // the robot.
+  bool maps_of_stopped_cycles = false;
 };
 
 // The settings of a session in real time (the program's output into its log, the steady clock).

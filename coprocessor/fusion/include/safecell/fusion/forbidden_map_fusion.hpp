@@ -108,6 +108,18 @@ class ForbiddenMapFusion {
   // outside the grid.
   const CellSet& fuse(const std::vector<CameraObservation>& observations, CellIndex robot_cell,
                       std::span<const double> q = {});
+  // fuse() in two halves, for a caller that decides on the obstacles whether the map is needed
+  // (the protective separation: when it stops the robot, every cell is forbidden anyway).
+  // remove_robot: robot removal alone, the same arguments and errors as fuse(); obstacles(),
+  // hidden(), robot_silhouette() and counts().obstacle_pixels are then this cycle's.
+  void remove_robot(const std::vector<CameraObservation>& observations, CellIndex robot_cell,
+                    std::span<const double> q = {});
+  // Back-projection and vote on what remove_robot left of the same observations; throws
+  // std::logic_error unless remove_robot ran since the last vote or forbid_all.
+  const CellSet& vote(const std::vector<CameraObservation>& observations);
+  // In place of vote(): every cell forbidden, none critical, no part voted on (about a memset of
+  // the map; no back-projection).
+  const CellSet& forbid_all();
 
   [[nodiscard]] const CellSet& forbidden() const { return forbidden_; }
   [[nodiscard]] const CellSet& critical() const { return critical_; }
@@ -191,6 +203,7 @@ class ForbiddenMapFusion {
   CellSet critical_;
   CellSet forbidden_;
   FusionCounts counts_;
+  bool removed_ = false;  // remove_robot ran this cycle; vote() is allowed
 };
 
 inline constexpr std::size_t kAtLeastBlockWords = 512;  // 4 KB per count level

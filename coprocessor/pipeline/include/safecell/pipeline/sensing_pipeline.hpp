@@ -19,7 +19,8 @@ namespace safecell {
 
 struct CycleTimes {
   double features_ms = 0.0;  // frames to blocked masks, all cameras
-  double fusion_ms = 0.0;    // robot removal, back-projection, threshold, static
+  // robot removal, the separation check, back-projection, threshold, static
+  double fusion_ms = 0.0;
 };
 
 class SensingPipeline {
@@ -62,6 +63,13 @@ class SensingPipeline {
     return separation_ ? &*separation_ : nullptr;
   }
   [[nodiscard]] const SeparationVerdict& separation_verdict() const { return verdict_; }
+  // When the separation stops the robot (too_close) every cell is forbidden, whatever the map.
+  // With `skip`, process() then runs robot removal and the separation check only, no
+  // back-projection or vote, and gives every cell forbidden: what the service sends, in the
+  // frames that are otherwise the slowest (someone close to the arm). Off by default: validation,
+  // the demo's figures and pictures need the fused map of every frame.
+  void skip_map_when_too_close(bool skip) { skip_map_when_too_close_ = skip; }
+  [[nodiscard]] bool skips_map_when_too_close() const { return skip_map_when_too_close_; }
 
  private:
   const CellModel& cell_;
@@ -75,6 +83,7 @@ class SensingPipeline {
   ForbiddenMapFusion fusion_;
   std::optional<ProtectiveSeparation> separation_;
   SeparationVerdict verdict_;
+  bool skip_map_when_too_close_ = false;
   std::vector<bool> known_;                    // per camera, for the separation check
   std::vector<const FeatureMask*> obstacles_;  // per camera, the fusion's
   CycleTimes times_;

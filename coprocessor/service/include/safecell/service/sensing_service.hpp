@@ -34,6 +34,10 @@ struct SensingServiceSettings {
   JointBufferLimits joints;        // the robot's acceleration limits, the buffer's bounds
   double widening_budget_m = 0.0;  // what the removal allows for timing (removal_widening_m)
   std::uint32_t camera_threshold = 2;
+  // Whether the pipeline makes the map of a cycle the protective separation stops the robot in,
+  // which the service sends all forbidden. Off: it skips it (sensing_pipeline.hpp), the service's
+  // slowest cycles being those; on for figures of the map itself (the demo's near-person share).
+  bool maps_of_stopped_cycles = false;
 };
 
 // What one cycle did, for the status line, the report and the incident recorder.
@@ -74,6 +78,8 @@ struct StopExplanation {
 class SensingService {
  public:
   // Keeps references to grid, pipeline and link. Registers itself for the link's joint states.
+  // Sets the pipeline to skip the map when its separation check stops the robot (the service
+  // then sends every cell forbidden) unless settings.maps_of_stopped_cycles.
   // views: the cameras' health checks (camera_views_for), which every frame set passes before
   // the pipeline sees it: a frozen, blinded, black, moved or relit camera's view is unknown.
   SensingService(const CspaceGrid& grid, SensingPipeline& pipeline, CoprocessorLink& link,
