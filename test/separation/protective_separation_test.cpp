@@ -147,6 +147,44 @@ TEST_F(ProtectiveSeparationTest, EveryPointWithinTheDistanceIsTooCloseAndFarPoin
   EXPECT_GT(missed_by_control, 0U);
 }
 
+// Camera 0 sees one point, camera 1 another, cameras 2 and 3 nothing: at the threshold of 2 the
+// check may only stop the robot when one ball's grown image holds both points' pixels. The vote
+// over a whole part's grown image (grown_part, the check before 2026-12-05) stops it whenever
+// the part's image holds them, however far apart: the per-ball vote must never stop when that
+// one does not, and must let some robots move that it stops (it fails if the vote is per part).
+TEST_F(ProtectiveSeparationTest, TwoCamerasMustAgreeOnOneBall) {
+  const double s = separation_distance_m(default_protective_separation());
+  const ProtectiveSeparation check = check_with(s);
+  ASSERT_EQ(cell_->camera_threshold, 2);
+  std::mt19937_64 rng(20261205);
+  std::size_t part_votes = 0;
+  std::size_t passed_per_ball = 0;
+  for (int i = 0; i < 400; ++i) {
+    Sample first = draw(rng);
+    const Sample second = draw(rng);
+    if (!first.obstacles[0].any() || !second.obstacles[1].any()) continue;
+    first.obstacles[1] = second.obstacles[1];
+    first.obstacles[2].clear();
+    first.obstacles[3].clear();
+    bool part_vote = false;
+    for (std::size_t part = 0; part < parts_->size(); ++part) {
+      const std::vector<FeatureMask> grown = check.grown_part(first.q, part);
+      part_vote = part_vote || (grown[0].intersects(first.obstacles[0]) &&
+                                grown[1].intersects(first.obstacles[1]));
+    }
+    const bool stopped = too_close(check, first);
+    ASSERT_FALSE(stopped && !part_vote)
+        << "stopped where no part's image holds both points: " << first.text()
+        << "; the second point " << second.point.transpose();
+    part_votes += part_vote ? 1 : 0;
+    passed_per_ball += part_vote && !stopped ? 1 : 0;
+  }
+  RecordProperty("part_votes", static_cast<int>(part_votes));
+  RecordProperty("passed_per_ball", static_cast<int>(passed_per_ball));
+  EXPECT_GE(part_votes, 20U) << "too few pairs inside a part's image to tell the votes apart";
+  EXPECT_GT(passed_per_ball, 0U) << "the check votes per part, not per ball";
+}
+
 TEST_F(ProtectiveSeparationTest, NoPointIsNearerThanTheDistanceOfTheSpeedAllowed) {
   const std::vector<SeparationLevel> levels =
       separation_levels(default_protective_separation(), default_reduced_speeds());

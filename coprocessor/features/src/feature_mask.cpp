@@ -94,6 +94,13 @@ bool FeatureMask::all_in_rect(const FeatureRect& rect) const {
   });
 }
 
+bool FeatureMask::any_in_rect(const FeatureRect& rect) const {
+  // for_rect_words stops at the first word that has a bit of the rectangle set.
+  return !for_rect_words(*this, rect, [](const std::uint64_t& word, std::uint64_t bits) {
+    return (word & bits) == 0;
+  });
+}
+
 std::uint64_t FeatureMask::block_start_bits(int size) {
   if (size < 1 || size > 64 || !std::has_single_bit(static_cast<unsigned>(size))) {
     throw std::invalid_argument("block size must be a power of two 1..64, got " +

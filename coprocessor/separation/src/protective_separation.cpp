@@ -56,7 +56,7 @@ ProtectiveSeparation::ProtectiveSeparation(const CellModel& cell, std::vector<Ro
   for (const SeparationLevel& level : levels_) {
     grown_.emplace_back(cell, ball_radius_m, widening_m + level.separation_m);
   }
-  scratch_.assign(grown_.front().camera_count(), FeatureMask(grid_));
+  rects_.resize(grown_.front().camera_count());
 }
 
 std::vector<FeatureMask> ProtectiveSeparation::grown_part(std::span<const double> q,
@@ -72,22 +72,29 @@ bool ProtectiveSeparation::votes(std::size_t level, std::span<const double> q,
                                  const std::vector<const FeatureMask*>& obstacles,
                                  SeparationVerdict& verdict) const {
   const ConfigurationSilhouettes& grown = grown_[level];
+  const std::size_t camera_count = rects_.size();
   std::vector<std::size_t> cameras;
   for (std::size_t part = 0; part < parts_.size(); ++part) {
-    for (FeatureMask& mask : scratch_) mask.clear();
-    grown.add_silhouettes(q, scratch_, parts_[part].first_body, parts_[part].end_body);
-    cameras.clear();
-    for (std::size_t camera = 0; camera < scratch_.size(); ++camera) {
-      // Unknown space counts as occupied: an unknown view may hide someone next to the part.
-      if (!known[camera] || scratch_[camera].intersects(*obstacles[camera])) {
-        cameras.push_back(camera);
-      }
+    grown.place_balls(q, parts_[part].first_body, parts_[part].end_body, balls_);
+    for (std::size_t camera = 0; camera < camera_count; ++camera) {
+      rects_[camera].resize(balls_.size());
+      grown.projection(camera).feature_rects(balls_, rects_[camera]);
     }
-    if (cameras.size() >= static_cast<std::size_t>(camera_threshold_)) {
-      verdict.within_m = levels_[level].separation_m;
-      verdict.part = part;
-      verdict.cameras = std::move(cameras);
-      return true;
+    for (std::size_t ball = 0; ball < balls_.size(); ++ball) {
+      cameras.clear();
+      for (std::size_t camera = 0; camera < camera_count; ++camera) {
+        // Unknown space counts as occupied: an unknown view may hide someone next to the ball.
+        const std::optional<FeatureRect>& rect = rects_[camera][ball];
+        if (!known[camera] || (rect && obstacles[camera]->any_in_rect(*rect))) {
+          cameras.push_back(camera);
+        }
+      }
+      if (cameras.size() >= static_cast<std::size_t>(camera_threshold_)) {
+        verdict.within_m = levels_[level].separation_m;
+        verdict.part = part;
+        verdict.cameras = std::move(cameras);
+        return true;
+      }
     }
   }
   return false;
@@ -96,7 +103,7 @@ bool ProtectiveSeparation::votes(std::size_t level, std::span<const double> q,
 SeparationVerdict ProtectiveSeparation::check(
     std::span<const double> q, const std::vector<bool>& known,
     const std::vector<const FeatureMask*>& obstacles) const {
-  const std::size_t cameras = scratch_.size();
+  const std::size_t cameras = rects_.size();
   if (known.size() != cameras || obstacles.size() != cameras) {
     throw std::invalid_argument("protective separation: " + std::to_string(known.size()) +
                                 " views and " + std::to_string(obstacles.size()) +

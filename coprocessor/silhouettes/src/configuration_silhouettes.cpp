@@ -65,23 +65,32 @@ void ConfigurationSilhouettes::add_silhouettes(std::span<const double> q,
                                 std::to_string(projections_.size()) + " cameras and " +
                                 std::to_string(robot_.dof()) + " joints");
   }
-  thread_local std::vector<Eigen::Isometry3d> poses;
   thread_local std::vector<Ball> placed;
+  place_balls(q, first_body, end_body, placed);
+  for (std::size_t camera = 0; camera < projections_.size(); ++camera) {
+    add_ball_rects(projections_[camera], placed, masks[camera]);
+  }
+}
+
+void ConfigurationSilhouettes::place_balls(std::span<const double> q, std::size_t first_body,
+                                           std::size_t end_body, std::vector<Ball>& balls) const {
+  if (q.size() != robot_.dof()) {
+    throw std::invalid_argument(std::to_string(q.size()) + " joint values for " +
+                                std::to_string(robot_.dof()) + " joints");
+  }
+  thread_local std::vector<Eigen::Isometry3d> poses;
   thread_local std::vector<double> joints;
   joints.assign(q.begin(), q.end());
   link_poses(robot_, joints, poses);
-  placed.clear();
-  if (first_body == 0 && end_body > 0) placed.assign(balls_.base.begin(), balls_.base.end());
+  balls.clear();
+  if (first_body == 0 && end_body > 0) balls.assign(balls_.base.begin(), balls_.base.end());
   // Body 1 + link is link `link`.
   const std::size_t links_end = std::min(end_body, 1 + balls_.links.size());
   for (std::size_t body = std::max<std::size_t>(first_body, 1); body < links_end; ++body) {
     const std::size_t link = body - 1;
     for (const Ball& ball : balls_.links[link]) {
-      placed.push_back(Ball{poses[link] * ball.centre_m, ball.radius_m});
+      balls.push_back(Ball{poses[link] * ball.centre_m, ball.radius_m});
     }
-  }
-  for (std::size_t camera = 0; camera < projections_.size(); ++camera) {
-    add_ball_rects(projections_[camera], placed, masks[camera]);
   }
 }
 

@@ -52,6 +52,8 @@ class FeatureMask {
   void reset_rect(const FeatureRect& rect);
   // Whether every cell of the rectangle clipped to the mask is set.
   [[nodiscard]] bool all_in_rect(const FeatureRect& rect) const;
+  // Whether some cell of the rectangle clipped to the mask is set.
+  [[nodiscard]] bool any_in_rect(const FeatureRect& rect) const;
   // Calls visit(block column, block row) for every block of size x size cells (aligned to
   // multiples of size, clipped to the mask) whose cells are all set, row by row, until it returns
   // true; returns whether it did. `size`: a power of two, 1..64 (throws std::invalid_argument

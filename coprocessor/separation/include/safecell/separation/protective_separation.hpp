@@ -6,10 +6,11 @@
 // then still braking when they meet (controller/SAFETY_CASE.md, "Direction").
 //
 // The check, once per map cycle at the robot's configuration at the exposure, for each level
-// (a speed f and its distance S(f), from full speed down): each robot part (robot_parts.hpp), its
-// balls grown by S(f) and the removal's widening, is projected into every camera. When, for some
-// part, at least `camera_threshold` cameras see an obstacle (after robot removal) inside that
-// grown image, or have an unknown view, a person may be within S(f) of the part. The verdict is
+// (a speed f and its distance S(f), from full speed down): each ball of the robot at its
+// configuration (the balls that cover its geometry, robot_balls.hpp), grown by S(f) and the
+// removal's widening, is projected into every camera as the rectangle of its image. When, for
+// some ball, at least `camera_threshold` cameras see an obstacle (after robot removal) inside its
+// rectangle, or have an unknown view, a person may be within S(f) of the robot. The verdict is
 // the speed of the first level whose vote is clear: the robot may go at that fraction of its top
 // speed (the service sends it with the map, the controller caps its speed scale); when every
 // level votes, the robot must stop and the service forbids the whole map.
@@ -20,14 +21,21 @@
 // walking in at K eats into it, while the robot slows at 1 / t_stop per second when it brakes:
 // the slow-down keeps pace with the approach (docs/closed_loop_findings.md).
 //
-// Why it is conservative: a point within S of a part lies inside the part's grown balls, so in
-// every camera that sees the point its pixel lies inside the grown part's image - the argument of
-// the tables' envelope, for one configuration and a larger margin. S covers the person's approach
-// from the exposure until the robot is at rest (cell_config.hpp, SeparationDistanceConfig).
+// Why it is conservative: let p be the robot's point nearest to a point x within S of it; p lies
+// in some ball (centre c, radius r), so |x - c| <= |x - p| + |p - c| <= S + r: x lies in that
+// ball grown by S, and in every camera that sees x its pixel lies inside that one ball's
+// rectangle. So the cameras that see x all vote for the same ball - the argument of the tables'
+// envelope, for one configuration and a larger margin. S covers the person's approach from the
+// exposure until the robot is at rest (cell_config.hpp, SeparationDistanceConfig).
+//
+// Why per ball: the vote over a whole part's grown image (until 2026-12-05) also counted two
+// cameras that see obstacles at opposite ends of a part grown by up to 0.64 m, a point that no
+// one ball holds; the vote per ball asks the cameras to agree on one ball, as safe and tighter.
 //
 // Thread context: the pipeline's; not thread-safe (scratch masks are members).
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -104,7 +112,9 @@ class ProtectiveSeparation {
   int camera_threshold_;
   FeatureGrid grid_;
   std::vector<ConfigurationSilhouettes> grown_;  // per level
-  mutable std::vector<FeatureMask> scratch_;
+  // Scratch of votes(): a part's balls placed, and their feature rectangles per camera.
+  mutable std::vector<Ball> balls_;
+  mutable std::vector<std::vector<std::optional<FeatureRect>>> rects_;
 };
 
 // The kind of a stop's reason (ServiceCycle::all_forbidden's text before its colon): what the

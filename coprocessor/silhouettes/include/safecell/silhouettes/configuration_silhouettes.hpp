@@ -45,6 +45,14 @@ class ConfigurationSilhouettes {
   // robot part's range, robot_parts.hpp); a range past the robot's bodies is cut at its end.
   void add_silhouettes(std::span<const double> q, std::vector<FeatureMask>& masks,
                        std::size_t first_body, std::size_t end_body) const;
+  // The balls of bodies first_body .. end_body - 1 placed at q, in the cell frame, grown by the
+  // widening (into `balls`, cleared first): what add_silhouettes projects. Thread-safe. Throws
+  // std::invalid_argument for the wrong number of joint values.
+  void place_balls(std::span<const double> q, std::size_t first_body, std::size_t end_body,
+                   std::vector<Ball>& balls) const;
+  [[nodiscard]] const BallProjection& projection(std::size_t camera) const {
+    return projections_.at(camera);
+  }
 
  private:
   RobotModel robot_;
