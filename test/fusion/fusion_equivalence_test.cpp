@@ -265,6 +265,9 @@ TEST(FusionEquivalence, AVoteNeedsThisCyclesRobotRemoval) {
   fusion.remove_robot(observations, 0);
   EXPECT_EQ(fusion.vote(observations), luts.static_cells);
   EXPECT_THROW((void)fusion.vote(observations), std::logic_error) << "a second vote on it";
+  const std::vector<CameraObservation> copy = observations;
+  fusion.remove_robot(observations, 0);
+  EXPECT_THROW((void)fusion.vote(copy), std::logic_error) << "a vote on other observations";
   fusion.remove_robot(observations, 0);
   (void)fusion.forbid_all();
   EXPECT_THROW((void)fusion.vote(observations), std::logic_error) << "after forbid_all";

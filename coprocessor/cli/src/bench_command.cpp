@@ -157,7 +157,7 @@ void run_cell_fusion_bench(const BenchOptions& options, std::ostream& out, std::
                    {"p99 [ms]", Align::kRight},
                    {"worst [ms]", Align::kRight},
                    {"served p99 [ms]", Align::kRight},
-                   {"worst [ms]", Align::kRight},
+                   {"served worst [ms]", Align::kRight},
                    {"forbidden (mean)", Align::kRight}});
   for (const CellFusionFigures* figures : {&baseline, &cell}) {
     table.add_row({figures->cell, fixed(figures->m_max_m, 3), grouped(figures->cells),

@@ -328,7 +328,7 @@ const CellSet& ForbiddenMapFusion::fuse(const std::vector<CameraObservation>& ob
 
 void ForbiddenMapFusion::remove_robot(const std::vector<CameraObservation>& observations,
                                       CellIndex robot_cell, std::span<const double> q) {
-  removed_ = false;
+  removed_from_ = nullptr;
   check(observations);
   if (robot_cell >= critical_.cell_count()) {
     throw std::out_of_range("robot cell " + std::to_string(robot_cell) + " outside the grid");
@@ -340,11 +340,11 @@ void ForbiddenMapFusion::remove_robot(const std::vector<CameraObservation>& obse
     counts_.obstacle_pixels[camera] = known ? obstacles_[camera].count() : std::size_t{0};
     counts_.hidden_pixels[camera] = known ? hidden_[camera].count() : std::size_t{0};
   }
-  removed_ = true;
+  removed_from_ = &observations;
 }
 
 const CellSet& ForbiddenMapFusion::forbid_all() {
-  removed_ = false;
+  removed_from_ = nullptr;
   std::fill(counts_.saturated.begin(), counts_.saturated.end(), false);
   std::fill(counts_.part_voted.begin(), counts_.part_voted.end(), false);
   std::fill(counts_.part_critical.begin(), counts_.part_critical.end(), false);
@@ -357,10 +357,13 @@ const CellSet& ForbiddenMapFusion::forbid_all() {
 }
 
 const CellSet& ForbiddenMapFusion::vote(const std::vector<CameraObservation>& observations) {
-  // The obstacles must be this cycle's: a vote on the last cycle's would be a silent wrong map.
-  if (!removed_) throw std::logic_error("fusion vote without robot removal this cycle");
-  removed_ = false;
-  check(observations);
+  // The obstacles must be this cycle's, of these observations: a vote on others would be a silent
+  // wrong map.
+  if (removed_from_ != &observations) {
+    throw std::logic_error("fusion vote without robot removal from these observations this cycle");
+  }
+  removed_from_ = nullptr;
+  check(observations);  // the same object, but its masks may have changed since
   std::fill(critical_lines_.begin(), critical_lines_.end(), 0);
   const auto threshold = static_cast<std::size_t>(settings_.camera_threshold);
   const bool hidden_votes = settings_.hidden_votes;

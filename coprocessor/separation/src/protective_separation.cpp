@@ -109,6 +109,16 @@ SeparationVerdict ProtectiveSeparation::check(
                                 " views and " + std::to_string(obstacles.size()) +
                                 " obstacle masks for " + std::to_string(cameras) + " cameras");
   }
+  for (std::size_t camera = 0; camera < cameras; ++camera) {
+    if (!known[camera]) continue;
+    const FeatureMask* mask = obstacles[camera];
+    if (mask == nullptr || mask->columns() != grid_.columns() || mask->rows() != grid_.rows()) {
+      throw std::invalid_argument("protective separation: camera " + std::to_string(camera) +
+                                  "'s obstacles are not a mask of the " +
+                                  std::to_string(grid_.columns()) + " x " +
+                                  std::to_string(grid_.rows()) + " feature grid");
+    }
+  }
   SeparationVerdict verdict;
   // The distances shrink level by level, so a clear level leaves every later one clear.
   for (std::size_t level = 0; level < levels_.size(); ++level) {

@@ -114,8 +114,9 @@ class ForbiddenMapFusion {
   // hidden(), robot_silhouette() and counts().obstacle_pixels are then this cycle's.
   void remove_robot(const std::vector<CameraObservation>& observations, CellIndex robot_cell,
                     std::span<const double> q = {});
-  // Back-projection and vote on what remove_robot left of the same observations; throws
-  // std::logic_error unless remove_robot ran since the last vote or forbid_all.
+  // Back-projection and vote on what remove_robot left of the same observations (the same
+  // object); throws std::logic_error unless remove_robot ran on them since the last vote or
+  // forbid_all.
   const CellSet& vote(const std::vector<CameraObservation>& observations);
   // In place of vote(): every cell forbidden, none critical, no part voted on (about a memset of
   // the map; no back-projection).
@@ -203,7 +204,9 @@ class ForbiddenMapFusion {
   CellSet critical_;
   CellSet forbidden_;
   FusionCounts counts_;
-  bool removed_ = false;  // remove_robot ran this cycle; vote() is allowed
+  // The observations remove_robot ran on this cycle (vote() is allowed on them alone); null after
+  // a vote, forbid_all or a refused removal. Compared, never read through.
+  const std::vector<CameraObservation>* removed_from_ = nullptr;
 };
 
 inline constexpr std::size_t kAtLeastBlockWords = 512;  // 4 KB per count level

@@ -28,11 +28,11 @@
 // envelope, for one configuration and a larger margin. S covers the person's approach from the
 // exposure until the robot is at rest (cell_config.hpp, SeparationDistanceConfig).
 //
-// Why per ball: the vote over a whole part's grown image (until 2026-12-05) also counted two
+// Why per ball: the vote over a whole part's grown image (before commit 8311e66) also counted two
 // cameras that see obstacles at opposite ends of a part grown by up to 0.64 m, a point that no
 // one ball holds; the vote per ball asks the cameras to agree on one ball, as safe and tighter.
 //
-// Thread context: the pipeline's; not thread-safe (scratch masks are members).
+// Thread context: the pipeline's; not thread-safe (scratch balls and rectangles are members).
 
 #include <cstddef>
 #include <optional>
@@ -68,8 +68,8 @@ struct SeparationVerdict {
   bool too_close = false;
   // The distance the check found clear of obstacles: S of the level allowed (0 for a stop).
   double clear_m = 0.0;
-  // The last level that voted (when speed_limit < 1): its distance, the first part that voted at
-  // it and its cameras (unknown views among them).
+  // The last level that voted (when speed_limit < 1): its distance, the part of the first ball
+  // that voted at it and that ball's cameras (unknown views among them).
   double within_m = 0.0;
   std::size_t part = 0;
   std::vector<std::size_t> cameras;
@@ -93,7 +93,8 @@ class ProtectiveSeparation {
 
   // The vote at joint values q (rad): `known[c]` whether camera c's view was known,
   // `obstacles[c]` its obstacles after robot removal (not read for an unknown view). Throws
-  // std::invalid_argument for counts that are not the cameras'.
+  // std::invalid_argument for counts that are not the cameras', or a known view's obstacles
+  // missing or not of the cell's feature grid (a smaller mask would hide part of a ball's image).
   [[nodiscard]] SeparationVerdict check(std::span<const double> q, const std::vector<bool>& known,
                                         const std::vector<const FeatureMask*>& obstacles) const;
   // The grown image (full-speed distance) of part `part` at q in every camera (for pictures and
@@ -102,8 +103,8 @@ class ProtectiveSeparation {
                                                     std::size_t part) const;
 
  private:
-  // Whether, at level `level`, some part has threshold cameras voting; fills the verdict's part
-  // and cameras when it has.
+  // Whether, at level `level`, some ball has threshold cameras voting; fills the verdict's part
+  // and cameras when one has.
   bool votes(std::size_t level, std::span<const double> q, const std::vector<bool>& known,
              const std::vector<const FeatureMask*>& obstacles, SeparationVerdict& verdict) const;
 

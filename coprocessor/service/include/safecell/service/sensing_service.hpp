@@ -79,7 +79,8 @@ class SensingService {
  public:
   // Keeps references to grid, pipeline and link. Registers itself for the link's joint states.
   // Sets the pipeline to skip the map when its separation check stops the robot (the service
-  // then sends every cell forbidden) unless settings.maps_of_stopped_cycles.
+  // then sends every cell forbidden) unless settings.maps_of_stopped_cycles; the pipeline keeps
+  // that setting after the service is gone.
   // views: the cameras' health checks (camera_views_for), which every frame set passes before
   // the pipeline sees it: a frozen, blinded, black, moved or relit camera's view is unknown.
   SensingService(const CspaceGrid& grid, SensingPipeline& pipeline, CoprocessorLink& link,
