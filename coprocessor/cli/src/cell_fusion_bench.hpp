@@ -37,7 +37,8 @@ struct CellFusionFigures {
 };
 
 // cell_path: empty for the default cell; lut_cache: empty for the default folder. Messages
-// (tables built, references) go to `log`.
+// (tables built, references) go to `log`. Both passes run every frame once, taking turns going
+// first a second of frames (30) at a time.
 CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::string& lut_cache,
                                       int frames, std::ostream& log);
 

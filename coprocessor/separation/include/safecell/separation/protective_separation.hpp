@@ -26,7 +26,9 @@
 // ball grown by S, and in every camera that sees x its pixel lies inside that one ball's
 // rectangle. So the cameras that see x all vote for the same ball - the argument of the tables'
 // envelope, for one configuration and a larger margin. S covers the person's approach from the
-// exposure until the robot is at rest (cell_config.hpp, SeparationDistanceConfig).
+// exposure until the robot is at rest (cell_config.hpp, SeparationDistanceConfig), not the
+// robot's own travel meanwhile (ISO/TS 15066's S_R + S_S): the look-ahead checks that travel
+// against the map, cell by cell until the robot is at rest (controller/SAFETY_CASE.md).
 //
 // Why per ball: the vote over a whole part's grown image (before commit 8311e66) also counted two
 // cameras that see obstacles at opposite ends of a part grown by up to 0.64 m, a point that no
