@@ -91,17 +91,16 @@ TEST_F(StrataTest, AgainstTheArmIsWithinACoupleOfCentimetres) {
 }
 
 TEST_F(StrataTest, BehindTheArmIsPartlyHiddenByItInMostScenes) {
-  test::PropertyRun run(12);
+  test::PropertyRun run(48);
   int hidden = 0;
   for (const auto& placed : scenes(SceneStratum::kBehindArm, run)) {
     hidden += cameras_hiding_human(placed.scene, BodyKind::kRobot) > 0 ? 1 : 0;
   }
-  // About 9 scenes in 10 are (behind the arm; behind an obstacle more), so half of 12 fails
-  // about once in 10,000 runs; a replay of one scene is not "most".
+  // About 9 scenes in 10 are (361 of 400 measured; behind an obstacle more), so two thirds of 48
+  // fails about twice in a million runs; uniform scenes (139 of 300 measured) pass it about 3
+  // times in 1,000. A replay of one scene is not "most".
   if (run.full_length()) {
-    if (run.full_length()) {
-      EXPECT_GE(2 * hidden, run.iterations()) << hidden << " of " << run.iterations();
-    }
+    EXPECT_GE(3 * hidden, 2 * run.iterations()) << hidden << " of " << run.iterations();
   }
 }
 
