@@ -66,3 +66,11 @@ for shard in 8024 9710; do
   run "validate-4-cameras-threshold-3-scene-$shard" validate --scenes 10000 --seed 11 \
     --shard "$shard/10000" --camera-threshold 3 --lut-cache "$cache"
 done
+# The eight cameras' fusion at threshold 5 against the default cell's, the same frames (bench
+# --cell), twice.
+sed 's/^camera_threshold: 2$/camera_threshold: 5/' "$out/cell-8-cameras.yaml" \
+  > "$out/cell-8-cameras-threshold-5.yaml"
+for i in 1 2; do
+  run "bench-8-cameras-threshold-5-$i" bench --cell "$out/cell-8-cameras-threshold-5.yaml" \
+    --frames 300 --lut-cache "$cache"
+done
