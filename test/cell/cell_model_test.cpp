@@ -81,7 +81,8 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   EXPECT_EQ(model.feature_grid.cell_width_px(), 11);
   EXPECT_EQ(model.feature_grid.cell_height_px(), 9);
   ASSERT_EQ(model.obstacles.size(), 1u);
-  EXPECT_EQ(model.camera_threshold, 2);
+  EXPECT_EQ(model.camera_threshold, 3);
+  EXPECT_EQ(model.occlusion_reach_cells, 4);
   ASSERT_TRUE(model.config.protective_separation.has_value());
   EXPECT_NEAR(separation_distance_m(*model.config.protective_separation), 0.64, 1e-12);
   EXPECT_EQ(model.feature_weights.average, 2);
@@ -136,6 +137,14 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
       << grid;
   EXPECT_EQ(model_error_of(cell + "camera_threshold: 2\n"),
             "cell.yaml:13: camera_threshold: value 2, expected 1 to the number of cameras (1)");
+  EXPECT_EQ(model_error_of(cell + "occlusion_reach_cells: -1\n"),
+            "cell.yaml:13: occlusion_reach_cells: value -1, expected 0 to 64 feature cells (the "
+            "feature grid's longer side)");
+  EXPECT_EQ(model_error_of(cell + "occlusion_reach_cells: 65\n"),
+            "cell.yaml:13: occlusion_reach_cells: value 65, expected 0 to 64 feature cells (the "
+            "feature grid's longer side)");
+  EXPECT_FALSE(load_cell_model(parse_cell_yaml(std::string(kBuiltinCell), "c.yaml"))
+                   .occlusion_reach_cells.has_value());
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) +
                            "obstacles:\n  - {name: t, size_m: [1, -1, 1], centre_m: [0, 0, 0]}\n"),
             "cell.yaml:12: obstacles[0].size_m: value -1.000000, expected edge lengths above 0 m");

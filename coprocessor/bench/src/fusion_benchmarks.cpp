@@ -17,6 +17,7 @@
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/fusion/baseline_fusion.hpp"
 #include "safecell/fusion/forbidden_map_fusion.hpp"
+#include "safecell/pipeline/cell_fusion_settings.hpp"
 #include "safecell/separation/protective_separation.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim_sources/simulated_reference.hpp"
@@ -102,7 +103,7 @@ void report(benchmark::State& state, const FusionSetUp& fusion, const ForbiddenM
 void fuse(benchmark::State& state, const std::vector<CameraObservation>& observations,
           bool hidden_votes = false) {
   const FusionSetUp& fusion = set_up();
-  FusionSettings settings{fusion.cell.camera_threshold};
+  FusionSettings settings = cell_fusion_settings(fusion.cell);
   settings.hidden_votes = hidden_votes;
   ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes, settings);
   while (state.KeepRunning()) {
@@ -126,8 +127,7 @@ void fusion_typical_scene_hidden_votes(benchmark::State& state) {
 // reports a slow-down or stop for it): every obstacle pixel's LUT-2 entry of every part, read.
 void stop_explanation_typical_scene(benchmark::State& state) {
   const FusionSetUp& fusion = set_up();
-  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes,
-                            FusionSettings{fusion.cell.camera_threshold});
+  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes, cell_fusion_settings(fusion.cell));
   engine.fuse(fusion.typical, fusion.robot_cell);
   FusedViewsHistory history(1);
   history.record(1, engine, fusion.typical);
@@ -152,8 +152,7 @@ void stop_explanation_typical_scene(benchmark::State& state) {
 // every cycle's fusion_ms in the pipeline.
 void protective_separation_typical_scene(benchmark::State& state) {
   const FusionSetUp& fusion = set_up();
-  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes,
-                            FusionSettings{fusion.cell.camera_threshold});
+  ForbiddenMapFusion engine(fusion.luts, fusion.silhouettes, cell_fusion_settings(fusion.cell));
   const std::vector<double> q = fusion.q;
   engine.fuse(fusion.typical, fusion.robot_cell, q);
   const ProtectiveSeparation check(
@@ -174,8 +173,7 @@ void protective_separation_typical_scene(benchmark::State& state) {
 
 void fusion_baseline_typical_scene(benchmark::State& state) {
   const FusionSetUp& fusion = set_up();
-  BaselineFusion engine(fusion.luts, fusion.silhouettes,
-                        FusionSettings{fusion.cell.camera_threshold});
+  BaselineFusion engine(fusion.luts, fusion.silhouettes, cell_fusion_settings(fusion.cell));
   while (state.KeepRunning()) {
     benchmark::DoNotOptimize(&engine.fuse(fusion.typical, fusion.robot_cell));
     benchmark::ClobberMemory();

@@ -353,7 +353,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
   refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
-                            "feature_grid", "blocked_cells", "camera_threshold", "blind_spots",
+                            "feature_grid", "blocked_cells", "camera_threshold",
+                            "occlusion_reach_cells", "blind_spots",
                             "entries", "entry_separation", "protective_separation"});
 
   CellConfig cell;
@@ -414,6 +415,11 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     const Field threshold = require(top, "camera_threshold");
     cell.camera_threshold = integer_of(threshold);
     cell.camera_threshold_at = threshold.at;
+  }
+  if (root["occlusion_reach_cells"]) {
+    const Field reach = require(top, "occlusion_reach_cells");
+    cell.occlusion_reach_cells = integer_of(reach);
+    cell.occlusion_reach_at = reach.at;
   }
   if (root["blind_spots"]) {
     const Field blind_spots = require(top, "blind_spots");

@@ -130,6 +130,18 @@ void settle_scene(CellModel& model) {
                      "value " + std::to_string(model.camera_threshold) +
                          ", expected 1 to the number of cameras (" + std::to_string(cameras) + ")");
   }
+  if (cell.occlusion_reach_cells) {
+    // Past the longer side of the feature grid a blob has nowhere further to grow.
+    const int longest = std::max(model.feature_grid.columns(), model.feature_grid.rows());
+    const int reach = *cell.occlusion_reach_cells;
+    if (reach < 0 || reach > longest) {
+      throw_cell_error(cell.occlusion_reach_at, "occlusion_reach_cells",
+                       "value " + std::to_string(reach) + ", expected 0 to " +
+                           std::to_string(longest) +
+                           " feature cells (the feature grid's longer side)");
+    }
+    model.occlusion_reach_cells = reach;
+  }
 }
 
 void settle_joints_without_robot(const CellConfig& cell) {
@@ -148,9 +160,16 @@ void settle_joints_without_robot(const CellConfig& cell) {
 }  // namespace
 
 CellModel load_cell_model(CellConfig config) {
-  CellModel model{
-      std::move(config),       std::nullopt, std::nullopt, {}, {}, {}, 1, kDefaultFeatureWeights,
-      kDefaultBlockedThreshold};
+  CellModel model{std::move(config),
+                  std::nullopt,
+                  std::nullopt,
+                  {},
+                  {},
+                  {},
+                  1,
+                  std::nullopt,
+                  kDefaultFeatureWeights,
+                  kDefaultBlockedThreshold};
   if (model.config.robot) {
     model.robot = load_robot(*model.config.robot);
     settle_from_robot(model);

@@ -8,7 +8,7 @@
 
 namespace safecell {
 
-// The cell's camera threshold, the cameras' exposure allowance (s), the rest by default.
+// The cell's fusion settings (cell_fusion_settings.hpp) with the cameras' exposure allowance (s).
 FusionSettings service_fusion_settings(const CellModel& cell, double sync_error_s);
 
 }  // namespace safecell

@@ -2,6 +2,7 @@
 
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
+#include "safecell/pipeline/cell_fusion_settings.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 
 namespace safecell {
@@ -28,12 +29,6 @@ CellModel cell_with(const std::string& cell_path, const CellOverrides& overrides
   return load_cell_model(std::move(config));
 }
 
-FusionSettings fusion_settings(const CellModel& cell) {
-  FusionSettings fusion;
-  fusion.camera_threshold = cell.camera_threshold;
-  return fusion;
-}
-
 }  // namespace
 
 SimulatedSensing::SimulatedSensing(const std::string& cell_path, const std::string& lut_cache,
@@ -44,7 +39,7 @@ SimulatedSensing::SimulatedSensing(const std::string& cell_path, const std::stri
       silhouettes(cell, grid, ModelLutOptions{}),
       sim(simulated_cameras(cell, seed)),
       reference(reference_images(sim, cell, seed, log)),
-      fusion(fusion_settings(cell)),
+      fusion(cell_fusion_settings(cell)),
       pipeline(cell, grid, luts.set, silhouettes, reference.frames, {}, fusion) {}
 
 }  // namespace safecell

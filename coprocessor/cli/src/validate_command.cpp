@@ -17,6 +17,7 @@
 #include "safecell/cli/closed_loop_validate_command.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/errors/input_error.hpp"
+#include "safecell/pipeline/cell_fusion_settings.hpp"
 #include "safecell/silhouettes/model_silhouettes.hpp"
 #include "safecell/validation/ground_truth_validation.hpp"
 #include "scene_options.hpp"
@@ -108,8 +109,9 @@ std::string percent(double share) { return fixed(100.0 * share, 2) + " %"; }
 void print_report(const ValidationRun& run, const ValidationReport& report, std::ostream& out) {
   out << "validated " << grouped(report.scenes) << " scenes (seed " << run.seed << ", shards "
       << run.shards.size() << " of " << run.shard_count << ", " << run.removal
-      << " robot removal, camera threshold " << run.camera_threshold << ", cameras voting per "
-      << run.robot_parts << (run.hidden_votes ? ", hidden votes" : ", no hidden votes") << ")"
+      << " robot removal (reach " << run.occlusion_reach << "), camera threshold "
+      << run.camera_threshold << ", cameras voting per " << run.robot_parts
+      << (run.hidden_votes ? ", hidden votes" : ", no hidden votes") << ")"
       << (run.negative_control == "none" ? "" : ", NEGATIVE CONTROL " + run.negative_control)
       << "\n  " << grouped(report.configs_checked)
       << " configurations against FCL and the renderer's object ids: colliding "
@@ -186,6 +188,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   CellConfig config = load_cell_file_or_default(options.cell_path);
   if (options.m_max_m > 0.0) config.m_max_m = options.m_max_m;
   if (options.camera_threshold > 0) config.camera_threshold = options.camera_threshold;
+  if (options.occlusion_reach >= 0) config.occlusion_reach_cells = options.occlusion_reach;
   const CellModel cell = load_cell_model(std::move(config));
   const CspaceGrid grid = make_grid(cell.config);
   ModelLutOptions tables{options.ball_radius_m, options.padding_m};
@@ -195,7 +198,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   validation.seed = options.seed;
   validation.configurations_per_scene = options.configurations;
   validation.limits = SceneLimits{options.humans, options.objects};
-  validation.fusion.camera_threshold = cell.camera_threshold;
+  validation.fusion = cell_fusion_settings(cell);
   validation.fusion.removal = removal_of(options.removal);
   validation.fusion.hidden_votes = options.hidden_votes;
   validation.negative_control = control_of(options.negative_control);
@@ -223,6 +226,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   run.ball_radius_m = options.ball_radius_m;
   run.robot_parts = options.robot_parts;
   run.hidden_votes = options.hidden_votes;
+  run.occlusion_reach = validation.fusion.occlusion_reach;
   run.m_max_m = cell.config.m_max_m;
   run.model_error = validation.model_error;
   run.shard_count = validation.shard.count;
@@ -323,6 +327,11 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
                    "Whether a camera whose view of a cell the robot hides votes for it where "
                    "another camera sees an obstacle: on, or off (the paper's vote)")
       ->capture_default_str();
+  validate_command
+      ->add_option("--occlusion-reach", validate->occlusion_reach,
+                   "How far occlusion-aware removal grows a person's blob into the robot's "
+                   "silhouette, feature cells (default: the cell's)")
+      ->check(CLI::Range(0, 10000));
   validate_command
       ->add_option("--m-max", validate->m_max_m,
                    "Max-move m_max of the C-space grid, metres (default: the cell's)")

@@ -59,8 +59,9 @@ bool same_run(const ValidationRun& a, const ValidationRun& b) {
          a.camera_threshold == b.camera_threshold && a.removal == b.removal &&
          a.negative_control == b.negative_control && a.padding_m == b.padding_m &&
          a.ball_radius_m == b.ball_radius_m && a.robot_parts == b.robot_parts &&
-         a.hidden_votes == b.hidden_votes && a.m_max_m == b.m_max_m &&
-         same_error(a.model_error, b.model_error) && a.shard_count == b.shard_count;
+         a.hidden_votes == b.hidden_votes && a.occlusion_reach == b.occlusion_reach &&
+         a.m_max_m == b.m_max_m && same_error(a.model_error, b.model_error) &&
+         a.shard_count == b.shard_count;
 }
 
 nlohmann::ordered_json validation_json(const ValidationRun& run, const ValidationReport& report) {
@@ -119,6 +120,7 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["ball_radius_m"] = run.ball_radius_m;
   json["robot_parts"] = run.robot_parts;
   json["hidden_votes"] = run.hidden_votes;
+  json["occlusion_reach"] = run.occlusion_reach;
   json["m_max_m"] = run.m_max_m;
   json["model_error"] = {{"camera_rotation_deg", run.model_error.camera_rotation_deg},
                          {"camera_translation_m", run.model_error.camera_translation_m},
@@ -217,6 +219,10 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
                                                  : std::string("whole-robot");
   // Reports written before hidden votes had none.
   run.hidden_votes = json.contains("hidden_votes") && field<bool>(json, "hidden_votes", source);
+  // Reports written before the reach was an option had the default.
+  run.occlusion_reach = json.contains("occlusion_reach")
+                            ? field<int>(json, "occlusion_reach", source)
+                            : kDefaultOcclusionReach;
   run.m_max_m = field<double>(json, "m_max_m", source);
   const auto error = field<nlohmann::json>(json, "model_error", source);
   run.model_error.camera_rotation_deg = field<double>(error, "camera_rotation_deg", source);

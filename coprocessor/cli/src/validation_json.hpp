@@ -23,6 +23,7 @@ struct ValidationRun {
   double ball_radius_m = 0.0;
   std::string robot_parts = "whole-robot";  // reports before the vote per part: the whole robot
   bool hidden_votes = false;                // reports before hidden votes had none
+  int occlusion_reach = kDefaultOcclusionReach;  // feature cells; reports before it: the default
   double m_max_m = 0.0;
   ModelError model_error;
   std::size_t shard_count = 1;

@@ -1,5 +1,6 @@
 #include "safecell/validation/demo_maps.hpp"
 
+#include "safecell/pipeline/cell_fusion_settings.hpp"
 #include "safecell/pipeline/sensing_pipeline.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 #include "safecell/sim/demo_scenario.hpp"
@@ -12,8 +13,7 @@ std::vector<CellSet> demo_map_sequence(const CellModel& cell, const CspaceGrid& 
                                        double first_s, int cycles, double fps) {
   SimulatedCell sim = simulate_cell(cell, SensorSettings{});
   const SimulatedReference reference = simulated_reference(sim, cell, 9, 1);
-  FusionSettings fusion;
-  fusion.camera_threshold = cell.camera_threshold;
+  const FusionSettings fusion = cell_fusion_settings(cell);
   SensingPipeline pipeline(cell, grid, luts, silhouettes, reference.frames, {}, fusion);
   const HumanWalker person = demo_person(cell);
   std::vector<CellSet> maps;

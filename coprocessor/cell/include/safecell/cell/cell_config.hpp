@@ -155,10 +155,15 @@ struct CellConfig {
   FeatureGridConfig feature_grid;
   BlockedCellConfig blocked_cells;
   // A configuration is critical when at least this many cameras see it blocked (paper §4.4).
-  // Unset: 2, or 1 with a single camera. 3 of 4 cameras misses a person whom the arm hides from
-  // two of them (docs/validation.md, "The camera threshold").
+  // Unset: 2, or 1 with a single camera. Above 2, a person whom the arm hides from some cameras
+  // needs an occlusion reach that fills them in (docs/validation.md, "The camera threshold").
   std::optional<int> camera_threshold;
   SourceLine camera_threshold_at;
+  // How far, in feature cells, a person's blob in a camera's view is grown into the robot's
+  // silhouette, where the arm may hide the rest of them (occlusion-aware robot removal,
+  // robot_removal.hpp). Unset: the fusion's default.
+  std::optional<int> occlusion_reach_cells;
+  SourceLine occlusion_reach_at;
   // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`
   // (the default) makes every C-space cell whose envelope reaches into one a static obstacle
   // cell; `allow` leaves them, with a warning whenever the tables are loaded.

@@ -22,14 +22,16 @@ struct CellModel {
   FeatureGrid feature_grid;
   std::vector<PlacedShape> obstacles;
   int camera_threshold = 1;  // settled: the cell's value or the default
+  // Feature cells, checked against the feature grid; unset: the fusion's default.
+  std::optional<int> occlusion_reach_cells;
   FeatureWeights feature_weights = kDefaultFeatureWeights;
   int blocked_threshold = kDefaultBlockedThreshold;
 };
 
 // Throws CellError naming the file, line and field: an unreadable robot, joints that do not match
 // the robot's, a range outside the arm's limits, l_m given for a robot (it is computed), or range
-// or l_m missing without one; unusable cameras, feature grid, obstacles, cell size or camera
-// threshold.
+// or l_m missing without one; unusable cameras, feature grid, obstacles, cell size, camera
+// threshold or occlusion reach.
 CellModel load_cell_model(CellConfig config);
 
 }  // namespace safecell
