@@ -97,7 +97,8 @@ TEST(ClosedLoopValidate, NoContactWhileMovingAndTheNegativeControlFindsThem) {
 // 1.5 m/s towards the side of the arm while its program runs; all four cameras see them. The
 // look-ahead alone stops the robot only when its own cell turns forbidden, 0.17 m from the
 // person, and it is still braking when they meet. With the protective separation it is at rest
-// before. (At the default threshold of 2 phantoms happen to stop it earlier.)
+// before. (At threshold 2, the default cell's before 2026-12-06, phantoms happen to stop it
+// earlier.)
 TEST(ClosedLoopValidate, TheProtectiveSeparationStopsTheArmBeforeAPersonWalksIntoIt) {
   const test::ScratchFolder scratch("safecell-separation");
   const auto args = [&scratch](const std::string& control) {

@@ -37,6 +37,9 @@ TEST(ValidateCommand, ReportsTheIssuesKeysAndMissesNothing) {
   EXPECT_TRUE(report["strata"].contains("configs/near_robot"));
   EXPECT_TRUE(report["unseen_reasons"].contains("hidden_by_robot"));
   EXPECT_FALSE(report["hidden_votes"].get<bool>()) << "the paper's vote is the default";
+  // The default cell's vote, which the coarse cell keeps: 3 of 4 cameras, blobs grown 4 cells.
+  EXPECT_EQ(report["camera_threshold"].get<int>(), 3);
+  EXPECT_EQ(report["occlusion_reach"].get<int>(), 4);
 }
 
 TEST(ValidateCommand, ANegativeControlFailsTheRun) {
@@ -96,6 +99,9 @@ TEST(ValidateCommand, RefusesUnknownOptionValues) {
   const auto shard = test::safecell_cli({"validate", "--scenes", "4", "--shard", "5/4"});
   EXPECT_EQ(shard.exit_code, 2);
   EXPECT_NE(shard.err.find("--shard '5/4'"), std::string::npos) << shard.err;
+  const auto reach = test::safecell_cli({"validate", "--scenes", "1", "--occlusion-reach", "-1"});
+  EXPECT_EQ(reach.exit_code, 2);
+  EXPECT_NE(reach.err.find("--occlusion-reach"), std::string::npos) << reach.err;
 }
 
 }  // namespace

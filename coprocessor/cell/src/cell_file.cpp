@@ -352,10 +352,10 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
   if (!root.IsMap()) {
     throw_cell_error(top.at, "(file)", "expected a mapping of cell fields, got " + shown(root));
   }
-  refuse_unknown_keys(top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles",
-                            "feature_grid", "blocked_cells", "camera_threshold",
-                            "occlusion_reach_cells", "blind_spots",
-                            "entries", "entry_separation", "protective_separation"});
+  refuse_unknown_keys(
+      top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles", "feature_grid",
+            "blocked_cells", "camera_threshold", "occlusion_reach_cells", "blind_spots", "entries",
+            "entry_separation", "protective_separation"});
 
   CellConfig cell;
   cell.source = source;
