@@ -103,14 +103,21 @@ if "protective_separation" in main and main["protective_separation"]["scenes"]:
       pct(sep["needless_share"]) + ". The scene strata put people against, behind and reaching "
       "towards the arm, so most scenes have someone within S.")
     w("")
+
+
+def time_sums(parts):
+    """Tasks compared and their summed times with and without people, s, over closed-loop totals
+    (or per-kind figures) `parts`."""
+    compared = sum(p["tasks_compared"] for p in parts)
+    with_people = sum(p["task_time_with_people_mean_s"] * p["tasks_compared"] for p in parts)
+    without = sum(p["task_time_without_people_mean_s"] * p["tasks_compared"] for p in parts)
+    return compared, with_people, without
+
+
 def task_times(names):
     """Mean task time with people and without, s, over the closed-loop reports `names`."""
     runs = [report(name) for name in names]
-    compared = sum(r["totals"]["tasks_compared"] for r in runs)
-    with_people = sum(r["totals"]["task_time_with_people_mean_s"] * r["totals"]["tasks_compared"]
-                      for r in runs)
-    without = sum(r["totals"]["task_time_without_people_mean_s"] * r["totals"]["tasks_compared"]
-                  for r in runs)
+    compared, with_people, without = time_sums([r["totals"] for r in runs])
     contacts = sum(r["totals"]["contacts_while_moving"] for r in runs)
     scenarios = sum(r["totals"]["scenarios"] for r in runs)
     return with_people / compared, without / compared, contacts, scenarios
@@ -400,11 +407,7 @@ def closed_loop_section():
                   if r["totals"]["min_human_distance_m"] is not None]
         return f"{min(values):.2f} m" if values else "-"
 
-    compared = total("tasks_compared")
-    with_people = sum(r["totals"]["task_time_with_people_mean_s"] * r["totals"]["tasks_compared"]
-                      for r in runs)
-    without = sum(r["totals"]["task_time_without_people_mean_s"] * r["totals"]["tasks_compared"]
-                  for r in runs)
+    compared, with_people, without = time_sums([r["totals"] for r in runs])
     w("## Closed loop: the whole system in simulated time")
     w("")
     w(f"Run by `bash docs/closed_loop_validation.sh` (or the commands it runs, listed below) on "
@@ -467,8 +470,7 @@ def closed_loop_section():
         parts = [r["by_kind"][kind] for r in runs if kind in r["by_kind"]]
         s = lambda key: sum(p[key] for p in parts)
         values = [p["min_human_distance_m"] for p in parts if p["min_human_distance_m"] is not None]
-        t_with = sum(p["task_time_with_people_mean_s"] * p["tasks_compared"] for p in parts)
-        t_without = sum(p["task_time_without_people_mean_s"] * p["tasks_compared"] for p in parts)
+        _, t_with, t_without = time_sums(parts)
         rows.append([kind, n(s("scenarios")), n(s("contacts_while_moving")),
                      n(s("contacts_with_stopped_robot")),
                      f"{min(values):.2f}" if values else "-", n(s("stops")), n(s("slowdowns")),
