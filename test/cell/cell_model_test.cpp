@@ -83,6 +83,7 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   ASSERT_EQ(model.obstacles.size(), 1u);
   EXPECT_EQ(model.camera_threshold, 3);
   EXPECT_EQ(model.occlusion_reach_cells, 4);
+  EXPECT_EQ(model.envelope_subdivision, 2u);  // envelope_max_move_m 0.09 of m_max_m 0.18
   ASSERT_TRUE(model.config.protective_separation.has_value());
   EXPECT_NEAR(separation_distance_m(*model.config.protective_separation), 0.64, 1e-12);
   EXPECT_EQ(model.feature_weights.average, 2);
@@ -145,6 +146,25 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
             "feature grid's longer side)");
   EXPECT_FALSE(load_cell_model(parse_cell_yaml(std::string(kBuiltinCell), "c.yaml"))
                    .occlusion_reach_cells.has_value());
+  const auto sub_cells = [](const std::string& max_move) {
+    return load_cell_model(
+               parse_cell_yaml(
+                   std::string(kBuiltinCell) + "envelope_max_move_m: " + max_move + "\n", "c.yaml"))
+        .envelope_subdivision;
+  };
+  EXPECT_EQ(
+      load_cell_model(parse_cell_yaml(std::string(kBuiltinCell), "c.yaml")).envelope_subdivision,
+      1u);
+  EXPECT_EQ(sub_cells("0.18"), 1u);
+  EXPECT_EQ(sub_cells("0.5"), 1u);
+  EXPECT_EQ(sub_cells("0.09"), 2u);
+  EXPECT_EQ(sub_cells("0.06"), 3u);
+  EXPECT_EQ(sub_cells("0.045"), 4u);
+  EXPECT_EQ(sub_cells("0.001"), 4u);  // at most kMaxEnvelopeSubdivision
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "envelope_max_move_m: 0\n"),
+            "cell.yaml:11: envelope_max_move_m: value 0.000000, expected a distance above 0 m");
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "envelope_max_move_m: -1\n"),
+            "cell.yaml:11: envelope_max_move_m: value -1.000000, expected a distance above 0 m");
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) +
                            "obstacles:\n  - {name: t, size_m: [1, -1, 1], centre_m: [0, 0, 0]}\n"),
             "cell.yaml:12: obstacles[0].size_m: value -1.000000, expected edge lengths above 0 m");

@@ -258,6 +258,65 @@ TEST(CspaceGrid, NeighboursStepOneCellAndStopAtTheEdges) {
   }
 }
 
+// Cell c of a grid holds cells c * f .. c * f + f - 1 of the grid subdivided by f, along every
+// discretised joint, and nothing else: their bounds tile the coarse cell's.
+TEST(CspaceGrid, ASubdividedGridCutsEveryDiscretisedCellIntoEqualParts) {
+  test::PropertyRun run(100);
+  for (int i = 0; i < run.iterations(); ++i) {
+    const CspaceGrid coarse = grid_of(random_spec(run.rng()));
+    const auto factor = static_cast<std::uint32_t>(1 + run.rng()() % 3);
+    const auto made = coarse.subdivided(factor);
+    double fine_cells = 1.0;
+    for (std::uint32_t j = 0; j < coarse.joint_count(); ++j) {
+      fine_cells *= coarse.cells_along(j) * (coarse.joint(j).discretised ? factor : 1.0);
+    }
+    if (fine_cells > 4294967295.0) {
+      ASSERT_FALSE(made.ok()) << "iteration " << i << ": " << fine_cells << " cells";
+      EXPECT_EQ(made.error().status, Status::kOverflow);
+      continue;
+    }
+    ASSERT_TRUE(made.ok()) << "iteration " << i << " factor " << factor;
+    const CspaceGrid& fine = made.value();
+    ASSERT_EQ(fine.joint_count(), coarse.joint_count());
+    EXPECT_EQ(fine.m_max_m(), coarse.m_max_m());
+    bool cut = false;
+    for (std::uint32_t j = 0; j < coarse.joint_count(); ++j)
+      cut = cut || coarse.joint(j).discretised;
+    cut = cut && factor > 1;
+    EXPECT_EQ(fine.fingerprint() != coarse.fingerprint(), cut)
+        << "iteration " << i << " factor " << factor;
+    const auto index = static_cast<CellIndex>(run.rng()() % coarse.cell_count());
+    const GridCoords coords = coarse.coords_of(index).value();
+    for (std::uint32_t j = 0; j < coarse.joint_count(); ++j) {
+      const std::uint32_t parts = coarse.joint(j).discretised ? factor : 1;
+      ASSERT_EQ(fine.cells_along(j), coarse.cells_along(j) * parts) << "joint " << j;
+      EXPECT_NEAR(fine.max_move_step_rad(j) * parts, coarse.max_move_step_rad(j), 1e-12);
+      const AngleInterval whole = coarse.cell_bounds(coords, j).value();
+      GridCoords child = coords;
+      double reached = whole.lo_rad;
+      for (std::uint32_t part = 0; part < parts; ++part) {
+        child.along[j] = coords.along[j] * parts + part;
+        const AngleInterval piece = fine.cell_bounds(child, j).value();
+        EXPECT_NEAR(piece.lo_rad, reached, 1e-12)
+            << "iteration " << i << " joint " << j << " cell " << coords.along[j] << " part "
+            << part << " of " << parts;
+        EXPECT_NEAR(piece.hi_rad - piece.lo_rad, (whole.hi_rad - whole.lo_rad) / parts, 1e-12);
+        reached = piece.hi_rad;
+      }
+      EXPECT_NEAR(reached, whole.hi_rad, 1e-12) << "iteration " << i << " joint " << j;
+    }
+  }
+}
+
+TEST(CspaceGrid, ASubdivisionThatDoesNotFitIsRefused) {
+  const CspaceGrid grid = grid_of(paper_spec());
+  EXPECT_EQ(grid.subdivided(0).error().field, GridField::kCellCount);
+  const auto huge = grid.subdivided(1u << 20);
+  ASSERT_FALSE(huge.ok());
+  EXPECT_EQ(huge.error().status, Status::kOverflow);
+  EXPECT_EQ(grid.subdivided(2).value().cell_count(), grid.cell_count() * 16);
+}
+
 TEST(CspaceGrid, PerJointAccessBeyondTheJointCountAsserts) {
   const CspaceGrid grid = grid_of(two_joint_spec());
   EXPECT_THROW(static_cast<void>(grid.cells_along(2)), test::AssertFailure);

@@ -13,12 +13,15 @@
 
 namespace safecell::test {
 
-inline CellModel coarse_default_cell() {
+inline CellConfig coarse_default_config() {
   CellConfig config = default_cell();
   config.m_max_m = 0.4;
   config.joints.at(3).discretised = false;  // its l_i (0.12 m) is below m_max / 2
-  return load_cell_model(config);
+  config.envelope_max_move_m.reset();       // whole cells: the tables fast to build
+  return config;
 }
+
+inline CellModel coarse_default_cell() { return load_cell_model(coarse_default_config()); }
 
 inline ModelLutOptions options_with(PartSplit parts) {
   ModelLutOptions options;

@@ -1,13 +1,16 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include "model_fixture.hpp"
+#include "safecell/cell/cell_error.hpp"
 #include "safecell/envelope/ball_projection.hpp"
 #include "safecell/silhouettes/model_silhouettes.hpp"
 #include "safecell/test/property.hpp"
+#include "silhouette_check.hpp"
 
 namespace safecell {
 namespace {
@@ -34,7 +37,10 @@ std::vector<FeatureMask> direct_silhouettes(const CellModel& cell, const ModelSi
 // one cell off the line would be caught.
 TEST(ModelSilhouettes, LinesMadeOnceGiveEachCellItsOwnSilhouetteInAnyOrder) {
   test::PropertyRun run(300);
-  const CellModel cell = load_cell_model(default_cell());
+  // Whole cells: direct_silhouettes takes the cell's own envelope.
+  CellConfig config = default_cell();
+  config.envelope_max_move_m.reset();
+  const CellModel cell = load_cell_model(config);
   const CspaceGrid grid = make_grid(cell.config);
   ModelLutOptions wider;
   wider.padding_m = 0.05;
@@ -71,6 +77,124 @@ TEST(ModelSilhouettes, LinesMadeOnceGiveEachCellItsOwnSilhouetteInAnyOrder) {
   if (run.full_length()) {
     EXPECT_GT(control_caught, run.iterations() / 2) << "control: one cell off must be caught";
   }
+}
+
+// The coarse default cell with its cells cut into 2 sub-cells per discretised joint (3 of them:
+// 8 sub-cells a cell), and the same cell drawn from whole cells.
+struct SubCellModels {
+  static CellModel with_max_move(std::optional<double> max_move_m) {
+    CellConfig config = test::coarse_default_config();
+    config.envelope_max_move_m = max_move_m;
+    return load_cell_model(config);
+  }
+  explicit SubCellModels(std::uint32_t per_joint = 2) : parts(per_joint) {}
+  std::uint32_t parts;
+  CellModel cell = with_max_move(test::coarse_default_config().m_max_m / parts);
+  CellModel whole_cell = with_max_move(std::nullopt);
+  CspaceGrid grid = make_grid(cell.config);
+  CspaceGrid sub_grid = grid.subdivided(parts).value();
+  ModelSilhouettes sub_cells{cell, grid, ModelLutOptions{}};
+  ModelSilhouettes whole_cells{whole_cell, grid, ModelLutOptions{}};
+  // Whole cells of the subdivided grid: each is one sub-cell.
+  ModelSilhouettes on_sub_grid{whole_cell, sub_grid, ModelLutOptions{}};
+
+  // The sub-cells of a cell of `grid`, as cells of `sub_grid`.
+  [[nodiscard]] std::vector<CellIndex> sub_cells_of(CellIndex index) const {
+    const GridCoords coords = grid.coords_of(index).value();
+    std::vector<CellIndex> found;
+    for (CellIndex sub = 0; sub < sub_grid.cell_count(); ++sub) {
+      const GridCoords sub_coords = sub_grid.coords_of(sub).value();
+      bool inside = true;
+      for (std::uint32_t j = 0; j < grid.joint_count(); ++j) {
+        const std::uint32_t cut = grid.joint(j).discretised ? parts : 1;
+        inside = inside && sub_coords.along[j] / cut == coords.along[j];
+      }
+      if (inside) found.push_back(sub);
+    }
+    return found;
+  }
+};
+
+TEST(ModelSilhouettes, EnvelopeMaxMoveSetsTheSubCellsPerJoint) {
+  EXPECT_EQ(SubCellModels::with_max_move(std::nullopt).envelope_subdivision, 1u);
+  EXPECT_EQ(SubCellModels::with_max_move(0.4).envelope_subdivision, 1u);
+  EXPECT_EQ(SubCellModels::with_max_move(1.0).envelope_subdivision, 1u);
+  EXPECT_EQ(SubCellModels::with_max_move(0.2).envelope_subdivision, 2u);
+  EXPECT_EQ(SubCellModels::with_max_move(0.15).envelope_subdivision, 3u);
+  EXPECT_EQ(SubCellModels::with_max_move(0.1).envelope_subdivision, 4u);
+  EXPECT_EQ(SubCellModels::with_max_move(0.01).envelope_subdivision, 4u);
+  EXPECT_THROW(SubCellModels::with_max_move(-0.2), CellError);
+}
+
+// A cell's silhouette is the union of its sub-cells' own (whole cells of the subdivided grid),
+// for random parts of random cells asked in random order (the lines a thread keeps).
+TEST(ModelSilhouettes, ACellsSilhouetteIsTheUnionOfItsSubCells) {
+  const SubCellModels models;
+  ASSERT_EQ(models.sub_cells.subdivision(), 2u);
+  ASSERT_EQ(models.sub_grid.cell_count(), models.grid.cell_count() * 8);
+  test::PropertyRun run(40);
+  const std::size_t cameras = models.cell.cameras.size();
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto index = static_cast<CellIndex>(run.rng()() % models.grid.cell_count());
+    const std::size_t part = run.rng()() % models.sub_cells.parts().size();
+    std::vector<FeatureMask> masks(cameras, FeatureMask(models.cell.feature_grid));
+    models.sub_cells.add_part_silhouettes(index, part, masks.data());
+    std::vector<FeatureMask> united(cameras, FeatureMask(models.cell.feature_grid));
+    const std::vector<CellIndex> subs = models.sub_cells_of(index);
+    ASSERT_EQ(subs.size(), 8u);
+    for (const CellIndex sub : subs)
+      models.on_sub_grid.add_part_silhouettes(sub, part, united.data());
+    ASSERT_EQ(masks, united) << "cell " << index << ", part " << part;
+  }
+}
+
+// Control for the check below: a silhouette drawn from one sub-cell only.
+class FirstSubCellOnly final : public RobotSilhouettes {
+ public:
+  explicit FirstSubCellOnly(const SubCellModels& models) : models_(models) {}
+  [[nodiscard]] std::size_t camera_count() const override {
+    return models_.on_sub_grid.camera_count();
+  }
+  void add_silhouette(CellIndex cell, std::size_t camera, FeatureMask& mask) const override {
+    models_.on_sub_grid.add_silhouette(models_.sub_cells_of(cell).front(), camera, mask);
+  }
+
+ private:
+  const SubCellModels& models_;
+};
+
+// The sub-cells hold the rendered robot (the renderer's own meshes, not the balls) anywhere in
+// the cell, and their silhouettes are measurably tighter than the whole cell's. (Not a subset of
+// it to the feature cell: a sub-cell's ball, placed half a sub-cell from the cell's centre and
+// grown by the sub-cell's chord, can reach out of the cell's ball by a sliver, of order r h^3.)
+// Control: the corner sub-cell of 4 per joint misses rendered pixels of configurations elsewhere
+// in the cell.
+TEST(ModelSilhouettes, SubCellSilhouettesHoldTheRenderedRobotAndAreTighter) {
+  const SubCellModels models;
+  test::expect_silhouettes_hold_rendered_robot(models.cell, models.grid, models.sub_cells, 30);
+  const SubCellModels quarters(4);
+  EXPECT_GT(
+      test::uncovered_robot_pixels(quarters.cell, quarters.grid, FirstSubCellOnly(quarters), 30)
+          .count,
+      0u)
+      << "control: a silhouette of one sub-cell must miss the robot elsewhere in the cell";
+  test::PropertyRun run(200);
+  std::size_t sub_count = 0;
+  std::size_t whole_count = 0;
+  const std::size_t cameras = models.cell.cameras.size();
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto index = static_cast<CellIndex>(run.rng()() % models.grid.cell_count());
+    std::vector<FeatureMask> sub(cameras, FeatureMask(models.cell.feature_grid));
+    std::vector<FeatureMask> whole(cameras, FeatureMask(models.cell.feature_grid));
+    models.sub_cells.add_silhouettes(index, sub);
+    models.whole_cells.add_silhouettes(index, whole);
+    for (std::size_t camera = 0; camera < cameras; ++camera) {
+      sub_count += sub[camera].count();
+      whole_count += whole[camera].count();
+    }
+  }
+  EXPECT_LT(static_cast<double>(sub_count), 0.9 * static_cast<double>(whole_count))
+      << sub_count << " feature cells from sub-cells, " << whole_count << " from whole cells";
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <sstream>
+#include <string>
 
 #include "model_fixture.hpp"
 #include "safecell/silhouettes/robot_silhouettes.hpp"
@@ -13,13 +15,20 @@
 
 namespace safecell::test {
 
-inline void expect_silhouettes_hold_rendered_robot(const CellModel& cell, const CspaceGrid& grid,
-                                                   const RobotSilhouettes& silhouettes,
-                                                   int iterations) {
+// Rendered robot pixels outside the silhouette of their cell, over `iterations` random
+// configurations, and the first of them in words (empty when there is none).
+struct UncoveredPixels {
+  std::size_t count = 0;
+  std::string first;
+};
+
+inline UncoveredPixels uncovered_robot_pixels(const CellModel& cell, const CspaceGrid& grid,
+                                              const RobotSilhouettes& silhouettes, int iterations) {
   SimulatedCell sim = simulate_cell(cell, SensorSettings{});
   const FeatureGrid& features = cell.feature_grid;
   PropertyRun run(iterations);
   std::uniform_int_distribution<CellIndex> any_cell(0, grid.cell_count() - 1);
+  UncoveredPixels uncovered;
   for (int i = 0; i < run.iterations(); ++i) {
     const CellIndex cell_index = any_cell(run.rng());
     const auto q = configuration_in(grid, cell_index, run.rng());
@@ -29,13 +38,29 @@ inline void expect_silhouettes_hold_rendered_robot(const CellModel& cell, const 
       const cv::Mat covered = sim.robot_coverage(camera, q);
       for (int y = 0; y < covered.rows; ++y) {
         for (int x = 0; x < covered.cols; ++x) {
-          if (covered.at<std::uint8_t>(y, x) == 0) continue;
-          ASSERT_TRUE(silhouette.test(x / features.cell_width_px(), y / features.cell_height_px()))
-              << "camera " << camera << " pixel " << x << "," << y << " cell " << cell_index;
+          if (covered.at<std::uint8_t>(y, x) == 0 ||
+              silhouette.test(x / features.cell_width_px(), y / features.cell_height_px())) {
+            continue;
+          }
+          if (uncovered.count++ == 0) {
+            std::ostringstream where;
+            where << "camera " << camera << " pixel " << x << "," << y << " cell " << cell_index
+                  << " q";
+            for (const double angle : q) where << " " << angle;
+            uncovered.first = where.str();
+          }
         }
       }
     }
   }
+  return uncovered;
+}
+
+inline void expect_silhouettes_hold_rendered_robot(const CellModel& cell, const CspaceGrid& grid,
+                                                   const RobotSilhouettes& silhouettes,
+                                                   int iterations) {
+  const UncoveredPixels uncovered = uncovered_robot_pixels(cell, grid, silhouettes, iterations);
+  EXPECT_EQ(uncovered.count, 0u) << "first: " << uncovered.first;
 }
 
 }  // namespace safecell::test

@@ -37,6 +37,7 @@ CellModel far_cameras_cell() {
   CellConfig config = default_cell();
   config.m_max_m = 0.4;  // as test::coarse_default_cell()
   config.joints.at(3).discretised = false;
+  config.envelope_max_move_m.reset();
   for (double& side : config.size_m) side *= 3.0;
   for (auto& camera : config.cameras) {
     LookAtConfig& look = camera.look_at.value();

@@ -354,8 +354,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
   }
   refuse_unknown_keys(
       top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles", "feature_grid",
-            "blocked_cells", "camera_threshold", "occlusion_reach_cells", "blind_spots", "entries",
-            "entry_separation", "protective_separation"});
+            "blocked_cells", "camera_threshold", "occlusion_reach_cells", "envelope_max_move_m",
+            "blind_spots", "entries", "entry_separation", "protective_separation"});
 
   CellConfig cell;
   cell.source = source;
@@ -420,6 +420,11 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     const Field reach = require(top, "occlusion_reach_cells");
     cell.occlusion_reach_cells = integer_of(reach);
     cell.occlusion_reach_at = reach.at;
+  }
+  if (root["envelope_max_move_m"]) {
+    const Field max_move = require(top, "envelope_max_move_m");
+    cell.envelope_max_move_m = number_of(max_move);
+    cell.envelope_max_move_at = max_move.at;
   }
   if (root["blind_spots"]) {
     const Field blind_spots = require(top, "blind_spots");

@@ -111,6 +111,22 @@ void settle_blocked_cells(CellModel& model) {
   }
 }
 
+void settle_envelope_subdivision(CellModel& model) {
+  const CellConfig& cell = model.config;
+  if (!cell.envelope_max_move_m) return;
+  const double max_move = *cell.envelope_max_move_m;
+  if (!std::isfinite(max_move) || !(max_move > 0.0)) {
+    throw_cell_error(cell.envelope_max_move_at, "envelope_max_move_m",
+                     "value " + std::to_string(max_move) + ", expected a distance above 0 m");
+  }
+  // Sub-cells only tighten the silhouettes (every count is sound), so a max-move below
+  // m_max_m / kMaxEnvelopeSubdivision (a cell file whose m_max_m a tool or test raised) takes the
+  // most sub-cells there are. The relative slack keeps m_max_m / 2 written in decimals at 2.
+  const double parts = std::ceil(cell.m_max_m / max_move * (1.0 - 1e-9));
+  model.envelope_subdivision = static_cast<std::uint32_t>(
+      std::clamp(parts, 1.0, static_cast<double>(kMaxEnvelopeSubdivision)));
+}
+
 void settle_scene(CellModel& model) {
   const CellConfig& cell = model.config;
   for (const double size : cell.size_m) {
@@ -142,6 +158,7 @@ void settle_scene(CellModel& model) {
     }
     model.occlusion_reach_cells = reach;
   }
+  settle_envelope_subdivision(model);
 }
 
 void settle_joints_without_robot(const CellConfig& cell) {
@@ -168,6 +185,7 @@ CellModel load_cell_model(CellConfig config) {
                   {},
                   1,
                   std::nullopt,
+                  1,
                   kDefaultFeatureWeights,
                   kDefaultBlockedThreshold};
   if (model.config.robot) {

@@ -109,7 +109,8 @@ std::string percent(double share) { return fixed(100.0 * share, 2) + " %"; }
 void print_report(const ValidationRun& run, const ValidationReport& report, std::ostream& out) {
   out << "validated " << grouped(report.scenes) << " scenes (seed " << run.seed << ", shards "
       << run.shards.size() << " of " << run.shard_count << ", " << run.removal
-      << " robot removal (reach " << run.occlusion_reach << "), camera threshold "
+      << " robot removal (reach " << run.occlusion_reach << "), envelopes of "
+      << run.envelope_subdivision << " sub-cells per joint, camera threshold "
       << run.camera_threshold << ", cameras voting per " << run.robot_parts
       << (run.hidden_votes ? ", hidden votes" : ", no hidden votes") << ")"
       << (run.negative_control == "none" ? "" : ", NEGATIVE CONTROL " + run.negative_control)
@@ -189,6 +190,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   if (options.m_max_m > 0.0) config.m_max_m = options.m_max_m;
   if (options.camera_threshold > 0) config.camera_threshold = options.camera_threshold;
   if (options.occlusion_reach >= 0) config.occlusion_reach_cells = options.occlusion_reach;
+  if (options.envelope_max_move_m > 0.0) config.envelope_max_move_m = options.envelope_max_move_m;
   const CellModel cell = load_cell_model(std::move(config));
   const CspaceGrid grid = make_grid(cell.config);
   ModelLutOptions tables{options.ball_radius_m, options.padding_m};
@@ -228,6 +230,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   run.hidden_votes = options.hidden_votes;
   run.occlusion_reach = validation.fusion.occlusion_reach;
   run.m_max_m = cell.config.m_max_m;
+  run.envelope_subdivision = cell.envelope_subdivision;
   run.model_error = validation.model_error;
   run.shard_count = validation.shard.count;
   run.shards = {validation.shard.index};
@@ -336,6 +339,11 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
       ->add_option("--m-max", validate->m_max_m,
                    "Max-move m_max of the C-space grid, metres (default: the cell's)")
       ->check(CLI::Range(0.01, 1.0));
+  validate_command
+      ->add_option("--envelope-max-move", validate->envelope_max_move_m,
+                   "Largest motion of the sub-cells whose envelopes draw a cell's silhouette, "
+                   "metres; m_max or more: whole cells (default: the cell's)")
+      ->check(CLI::Range(0.001, 10.0));
   validate_command
       ->add_option("--camera-threshold", validate->camera_threshold,
                    "Cameras that must see a cell blocked (default: the cell's)")

@@ -60,8 +60,8 @@ bool same_run(const ValidationRun& a, const ValidationRun& b) {
          a.negative_control == b.negative_control && a.padding_m == b.padding_m &&
          a.ball_radius_m == b.ball_radius_m && a.robot_parts == b.robot_parts &&
          a.hidden_votes == b.hidden_votes && a.occlusion_reach == b.occlusion_reach &&
-         a.m_max_m == b.m_max_m && same_error(a.model_error, b.model_error) &&
-         a.shard_count == b.shard_count;
+         a.m_max_m == b.m_max_m && a.envelope_subdivision == b.envelope_subdivision &&
+         same_error(a.model_error, b.model_error) && a.shard_count == b.shard_count;
 }
 
 nlohmann::ordered_json validation_json(const ValidationRun& run, const ValidationReport& report) {
@@ -122,6 +122,7 @@ nlohmann::ordered_json validation_json(const ValidationRun& run, const Validatio
   json["hidden_votes"] = run.hidden_votes;
   json["occlusion_reach"] = run.occlusion_reach;
   json["m_max_m"] = run.m_max_m;
+  json["envelope_subdivision"] = run.envelope_subdivision;
   json["model_error"] = {{"camera_rotation_deg", run.model_error.camera_rotation_deg},
                          {"camera_translation_m", run.model_error.camera_translation_m},
                          {"focal_error", run.model_error.focal_error},
@@ -224,6 +225,10 @@ void read_validation_json(const nlohmann::json& json, const std::string& source,
                             ? field<int>(json, "occlusion_reach", source)
                             : kDefaultOcclusionReach;
   run.m_max_m = field<double>(json, "m_max_m", source);
+  // Reports written before sub-cells drew whole cells.
+  run.envelope_subdivision = json.contains("envelope_subdivision")
+                                 ? field<std::uint32_t>(json, "envelope_subdivision", source)
+                                 : 1;
   const auto error = field<nlohmann::json>(json, "model_error", source);
   run.model_error.camera_rotation_deg = field<double>(error, "camera_rotation_deg", source);
   run.model_error.camera_translation_m = field<double>(error, "camera_translation_m", source);

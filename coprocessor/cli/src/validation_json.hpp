@@ -25,6 +25,7 @@ struct ValidationRun {
   bool hidden_votes = false;                // reports before hidden votes had none
   int occlusion_reach = kDefaultOcclusionReach;  // feature cells; reports before it: the default
   double m_max_m = 0.0;
+  std::uint32_t envelope_subdivision = 1;  // sub-cells per joint; reports before them: 1
   ModelError model_error;
   std::size_t shard_count = 1;
   std::vector<std::size_t> shards;  // which of them this report holds (1-based)

@@ -40,6 +40,8 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
   hash.add_u32(CellEnvelope::kMethodVersion);
   hash.add_double(options.ball_radius_m);
   hash.add_double(options.padding_m);
+  // Whole cells hash as before sub-cells existed, so that their tables stay valid.
+  if (cell.envelope_subdivision > 1) hash.add_u32(cell.envelope_subdivision);
   const RobotModel& robot = *cell.robot;
   for (const RobotPart& part : robot_parts(robot, options.parts)) {
     hash.add_u64(part.first_body);

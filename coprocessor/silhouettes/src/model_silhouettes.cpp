@@ -23,9 +23,10 @@ struct LineBalls {
   std::vector<Ball> balls;
 };
 
-// A thread's lines: one per range of bodies it asks for in turn (the build asks for one robot
-// part at a time; a caller that alternates parts finds each part's line here).
-constexpr std::size_t kLinesPerThread = 4;
+// A thread's lines: the build asks for one robot part at a time, and a cell's sub-cells lie on
+// s^(d-1) lines (8 for s = 2 and 4 discretised joints); a caller that alternates parts finds each
+// part's lines here too.
+constexpr std::size_t kLinesPerThread = 32;
 
 // The envelope of the cell's robot, after the checks (so that no argument touches a missing
 // robot before they ran).
@@ -38,6 +39,16 @@ CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
   }
   return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
                       options.padding_m, part_starts);
+}
+
+// The grid of the sub-cells the silhouettes are drawn from.
+CspaceGrid sub_cell_grid(const CspaceGrid& grid, std::uint32_t subdivision) {
+  const auto sub_cells = grid.subdivided(subdivision);
+  if (!sub_cells.ok()) {
+    throw std::invalid_argument("cutting every C-space cell into " + std::to_string(subdivision) +
+                                " sub-cells per joint needs more than 2^32 - 1 cells");
+  }
+  return sub_cells.value();
 }
 
 }  // namespace
@@ -69,20 +80,29 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
                                    const ModelLutOptions& options)
     : grid_(grid),
       feature_grid_(cell.feature_grid),
-      envelope_(checked_envelope(cell, grid, options)) {
+      envelope_(checked_envelope(cell, grid, options)),
+      subdivision_(cell.envelope_subdivision) {
+  if (subdivision_ < 1) throw std::invalid_argument("envelope subdivision 0");
+  if (subdivision_ > 1) {
+    sub_envelope_.emplace(checked_envelope(cell, sub_cell_grid(grid, subdivision_), options));
+    for (std::uint32_t joint = 0; joint < grid.joint_count(); ++joint) {
+      if (grid.joint(joint).discretised) discretised_joints_.push_back(joint);
+    }
+  }
   parts_ = robot_parts(*cell.robot, options.parts);
   projections_.reserve(cell.cameras.size());
   for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
   instance_ = next_instance.fetch_add(1);
-  envelope_.first_joint_motions(line_motions_);
-  cached_bodies_ = envelope_.tail_body();  // the head, per prefix
+  const CellEnvelope& envelope = drawn();
+  envelope.first_joint_motions(line_motions_);
+  cached_bodies_ = envelope.tail_body();  // the head, per prefix
   cached_.resize(cached_bodies_);
   std::vector<Ball> balls;
   for (std::size_t body = 0; body < cached_bodies_; ++body) {
-    cached_[body].resize(envelope_.prefix_count(body));
+    cached_[body].resize(envelope.prefix_count(body));
     for (std::size_t prefix = 0; prefix < cached_[body].size(); ++prefix) {
       balls.clear();
-      envelope_.append_body_balls(body, prefix, balls);
+      envelope.append_body_balls(body, prefix, balls);
       cached_[body][prefix].assign(projections_.size(), FeatureMask(feature_grid_));
       for (std::size_t camera = 0; camera < projections_.size(); ++camera) {
         add_ball_rects(projections_[camera], balls, cached_[body][prefix][camera]);
@@ -117,14 +137,38 @@ void ModelSilhouettes::add_bodies(CellIndex cell, BodyRange bodies, std::size_t 
                                   std::size_t end_camera, FeatureMask* masks) const {
   const auto coords = grid_.coords_of(cell);
   if (!coords.ok()) throw std::out_of_range("cell " + std::to_string(cell) + " outside the grid");
-  const std::size_t end_body = std::min(bodies.end, envelope_.body_count());
+  if (subdivision_ == 1) {
+    add_sub_cell_bodies(coords.value(), bodies, first_camera, end_camera, masks);
+    return;
+  }
+  std::size_t sub_cells = 1;
+  for (std::size_t joint = 0; joint < discretised_joints_.size(); ++joint)
+    sub_cells *= subdivision_;
+  GridCoords sub_cell = coords.value();
+  // Joint 0 fastest, so that neighbouring sub-cells share a line (tail_balls).
+  for (std::size_t index = 0; index < sub_cells; ++index) {
+    std::size_t rest = index;
+    for (const std::uint32_t joint : discretised_joints_) {
+      sub_cell.along[joint] = coords.value().along[joint] * subdivision_ +
+                              static_cast<std::uint32_t>(rest % subdivision_);
+      rest /= subdivision_;
+    }
+    add_sub_cell_bodies(sub_cell, bodies, first_camera, end_camera, masks);
+  }
+}
+
+void ModelSilhouettes::add_sub_cell_bodies(const GridCoords& sub_cell, BodyRange bodies,
+                                           std::size_t first_camera, std::size_t end_camera,
+                                           FeatureMask* masks) const {
+  const CellEnvelope& envelope = drawn();
+  const std::size_t end_body = std::min(bodies.end, envelope.body_count());
   const std::size_t end_cached = std::min(end_body, cached_bodies_);
   const std::vector<Ball>& balls =
-      tail_balls(coords.value(), std::max(bodies.first, cached_bodies_), end_body);
+      tail_balls(sub_cell, std::max(bodies.first, cached_bodies_), end_body);
   for (std::size_t camera = first_camera; camera < end_camera; ++camera) {
     FeatureMask& mask = masks[camera - first_camera];
     for (std::size_t body = bodies.first; body < end_cached; ++body) {
-      mask |= cached_[body][envelope_.prefix_of(coords.value(), body)][camera];
+      mask |= cached_[body][envelope.prefix_of(sub_cell, body)][camera];
     }
     add_ball_rects(projections_[camera], balls, mask);
   }
@@ -138,18 +182,17 @@ const std::vector<Ball>& ModelSilhouettes::tail_balls(const GridCoords& coords,
   thread_local std::vector<Ball> moved;
   GridCoords line_start = coords;
   line_start.along[0] = 0;
-  const CellIndex start = grid_.index_of(line_start).value();
-  const auto same_bodies = [&](const LineBalls& line) {
-    return line.instance == instance_ && line.first_body == first_body && line.end_body == end_body;
+  const CellEnvelope& envelope = drawn();
+  const CellIndex start = envelope.grid().index_of(line_start).value();
+  const auto same_line = [&](const LineBalls& line) {
+    return line.instance == instance_ && line.line_start == start &&
+           line.first_body == first_body && line.end_body == end_body;
   };
-  auto found = std::find_if(lines.begin(), lines.end(), same_bodies);
+  auto found = std::find_if(lines.begin(), lines.end(), same_line);
   if (found == lines.end()) {
     found = lines.begin() + static_cast<std::ptrdiff_t>(next_replaced);
     next_replaced = (next_replaced + 1) % kLinesPerThread;
-    found->instance = 0;
-  }
-  if (found->instance == 0 || found->line_start != start) {
-    envelope_.balls_of_bodies(line_start, first_body, end_body, found->balls);
+    envelope.balls_of_bodies(line_start, first_body, end_body, found->balls);
     found->instance = instance_;
     found->line_start = start;
     found->first_body = first_body;

@@ -42,7 +42,6 @@ Result<CspaceGrid, GridSpecError> CspaceGrid::create(const GridSpec& spec) noexc
   grid.spec_ = spec;
   for (std::uint32_t j = spec.joint_count; j < kMaxJoints; ++j) grid.spec_.joints[j] = JointSpec{};
 
-  std::uint64_t total = 1;
   for (std::uint32_t j = 0; j < spec.joint_count; ++j) {
     const JointSpec& joint = spec.joints[j];
     const auto checked = check_joint(joint, j, spec.m_max_m);
@@ -59,30 +58,55 @@ Result<CspaceGrid, GridSpecError> CspaceGrid::create(const GridSpec& spec) noexc
       }
       cells = ceil_to_u64(exact_cells);
     }
-    grid.stride_[j] = static_cast<CellIndex>(total);
-    total *= cells;
-    if (total > kMaxCellIndexCount) return refuse(Status::kOverflow, GridField::kCellCount, j);
-
     grid.max_move_step_rad_[j] = step_rad;
     grid.cells_along_[j] = static_cast<std::uint32_t>(cells);
     grid.cell_width_rad_[j] = range_rad / static_cast<double>(cells);
   }
-  grid.cell_count_ = static_cast<std::uint32_t>(total);
+  const auto derived = grid.derive_from_counts();
+  if (!derived.ok()) return derived.error();
+  return grid;
+}
+
+Result<CspaceGrid, GridSpecError> CspaceGrid::subdivided(std::uint32_t factor) const noexcept {
+  if (factor == 0) return refuse(Status::kInvalidArgument, GridField::kCellCount);
+  CspaceGrid grid = *this;
+  for (std::uint32_t j = 0; j < spec_.joint_count; ++j) {
+    if (!spec_.joints[j].discretised) continue;
+    const std::uint64_t cells = std::uint64_t{cells_along_[j]} * factor;
+    if (cells > kMaxCellIndexCount) return refuse(Status::kOverflow, GridField::kCellCount, j);
+    const double range_rad = spec_.joints[j].hi_rad - spec_.joints[j].lo_rad;
+    grid.max_move_step_rad_[j] = max_move_step_rad_[j] / static_cast<double>(factor);
+    grid.cells_along_[j] = static_cast<std::uint32_t>(cells);
+    grid.cell_width_rad_[j] = range_rad / static_cast<double>(cells);
+  }
+  const auto derived = grid.derive_from_counts();
+  if (!derived.ok()) return derived.error();
+  return grid;
+}
+
+Result<bool, GridSpecError> CspaceGrid::derive_from_counts() noexcept {
+  std::uint64_t total = 1;
+  for (std::uint32_t j = 0; j < spec_.joint_count; ++j) {
+    stride_[j] = static_cast<CellIndex>(total);
+    total *= cells_along_[j];
+    if (total > kMaxCellIndexCount) return refuse(Status::kOverflow, GridField::kCellCount, j);
+  }
+  cell_count_ = static_cast<std::uint32_t>(total);
 
   Fnv1a64 hash;
   hash.add_u32(kFingerprintLayout);
-  hash.add_u32(spec.joint_count);
-  hash.add_double(spec.m_max_m);
-  for (std::uint32_t j = 0; j < spec.joint_count; ++j) {
-    const JointSpec& joint = spec.joints[j];
+  hash.add_u32(spec_.joint_count);
+  hash.add_double(spec_.m_max_m);
+  for (std::uint32_t j = 0; j < spec_.joint_count; ++j) {
+    const JointSpec& joint = spec_.joints[j];
     hash.add_double(joint.lo_rad);
     hash.add_double(joint.hi_rad);
     hash.add_double(joint.l_m);
     hash.add_byte(joint.discretised ? 1 : 0);
-    hash.add_u32(grid.cells_along_[j]);
+    hash.add_u32(cells_along_[j]);
   }
-  grid.fingerprint_ = hash.value();
-  return grid;
+  fingerprint_ = hash.value();
+  return true;
 }
 
 const JointSpec& CspaceGrid::joint(std::uint32_t joint) const {

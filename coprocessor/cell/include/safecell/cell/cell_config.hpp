@@ -164,6 +164,12 @@ struct CellConfig {
   // robot_removal.hpp). Unset: the fusion's default.
   std::optional<int> occlusion_reach_cells;
   SourceLine occlusion_reach_at;
+  // The largest motion, in metres, of the sub-cells whose envelopes draw a cell's silhouette
+  // (model_silhouettes.hpp): each discretised joint's cell is cut into ceil(m_max_m / this) equal
+  // sub-cells, at most kMaxEnvelopeSubdivision (cell_model.hpp). Unset, or m_max_m or more: whole
+  // cells.
+  std::optional<double> envelope_max_move_m;
+  SourceLine envelope_max_move_at;
   // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`
   // (the default) makes every C-space cell whose envelope reaches into one a static obstacle
   // cell; `allow` leaves them, with a warning whenever the tables are loaded.

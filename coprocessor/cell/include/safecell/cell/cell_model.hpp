@@ -3,6 +3,7 @@
 // model when the cell names one (l_i computed, ranges defaulting to the arm's limits) or from the
 // cell file alone otherwise.
 
+#include <cstdint>
 #include <optional>
 
 #include "safecell/camera/feature_grid.hpp"
@@ -14,6 +15,10 @@
 
 namespace safecell {
 
+// Sub-cells per joint: more would multiply the table build's work by more than 4^d (256 with the
+// default cell's 4 discretised joints).
+inline constexpr std::uint32_t kMaxEnvelopeSubdivision = 4;
+
 struct CellModel {
   CellConfig config;  // complete: every joint has range_deg and l_m
   std::optional<RobotModel> robot;
@@ -24,6 +29,9 @@ struct CellModel {
   int camera_threshold = 1;  // settled: the cell's value or the default
   // Feature cells, checked against the feature grid; unset: the fusion's default.
   std::optional<int> occlusion_reach_cells;
+  // Sub-cells per discretised joint of a cell's envelope (1 to kMaxEnvelopeSubdivision), settled
+  // from envelope_max_move_m: the model-mode tables' silhouettes are the union of theirs.
+  std::uint32_t envelope_subdivision = 1;
   FeatureWeights feature_weights = kDefaultFeatureWeights;
   int blocked_threshold = kDefaultBlockedThreshold;
 };
@@ -31,7 +39,7 @@ struct CellModel {
 // Throws CellError naming the file, line and field: an unreadable robot, joints that do not match
 // the robot's, a range outside the arm's limits, l_m given for a robot (it is computed), or range
 // or l_m missing without one; unusable cameras, feature grid, obstacles, cell size, camera
-// threshold or occlusion reach.
+// threshold, occlusion reach or envelope max-move.
 CellModel load_cell_model(CellConfig config);
 
 }  // namespace safecell

@@ -10,9 +10,17 @@
 //
 // Per robot part (robot_parts.hpp): the build takes each part's silhouette on its own, for the
 // vote per part; robot removal takes the whole robot's, the union of the parts'.
+//
+// Sub-cells. A cell's envelope grows every ball by the sweeps of the cell's joints: one ball
+// around a banana-shaped path, much wider than the path across it. With the cell's
+// envelope_subdivision s > 1 each discretised joint's cell is cut into s equal sub-cells
+// (CspaceGrid::subdivided), and the cell's silhouette is the union of its s^d sub-cells'
+// envelopes, each swept over 1/s of the width: the same robot held (every configuration of the
+// cell lies in one sub-cell), by balls that follow its path. envelope() stays the whole cell's.
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
@@ -47,18 +55,30 @@ class ModelSilhouettes final : public RobotSilhouettes {
   // else std::invalid_argument; part < parts().size(), else std::out_of_range). Thread-safe.
   void add_part_silhouettes(CellIndex cell, std::size_t part, FeatureMask* masks) const;
 
+  // The envelope of whole cells of the grid (static obstacles are tested against it).
   [[nodiscard]] const CellEnvelope& envelope() const { return envelope_; }
+  // Sub-cells per discretised joint whose envelopes the silhouettes are drawn from (1: none).
+  [[nodiscard]] std::uint32_t subdivision() const { return subdivision_; }
   [[nodiscard]] const FeatureGrid& feature_grid() const { return feature_grid_; }
 
  private:
   // masks[camera - first_camera] |= the silhouette of bodies `bodies`, for cameras
-  // first_camera..end_camera-1.
+  // first_camera..end_camera-1: the union over the cell's sub-cells.
   void add_bodies(CellIndex cell, BodyRange bodies, std::size_t first_camera,
                   std::size_t end_camera, FeatureMask* masks) const;
-  // The balls of bodies first_body..end_body-1 (first_body >= 1) of the cell: those of its line's
-  // first cell (joint 0 at its first cell), made once per line and thread, moved along the line
-  // (CellEnvelope::first_joint_motions). The builds go through the cells in order, so most cells
-  // find their line's balls made. The reference is the calling thread's, valid until its next call.
+  // The same for one cell of the drawn envelope's grid (a sub-cell).
+  void add_sub_cell_bodies(const GridCoords& sub_cell, BodyRange bodies, std::size_t first_camera,
+                           std::size_t end_camera, FeatureMask* masks) const;
+  // The envelope the silhouettes are drawn from: of the sub-cells, or envelope_ without them.
+  [[nodiscard]] const CellEnvelope& drawn() const {
+    return sub_envelope_ ? *sub_envelope_ : envelope_;
+  }
+  // The balls of bodies first_body..end_body-1 (first_body >= 1) of a cell of drawn()'s grid:
+  // those of its line's first cell (joint 0 at its first cell), made once per line and thread,
+  // moved along the line (CellEnvelope::first_joint_motions). The builds go through the cells in
+  // order, so most cells find their lines' balls made (a cell's sub-cells lie on s^(d-1) lines, a
+  // thread keeps kLinesPerThread). The reference is the calling thread's, valid until its next
+  // call.
   const std::vector<Ball>& tail_balls(const GridCoords& coords, std::size_t first_body,
                                       std::size_t end_body) const;
 
@@ -66,6 +86,9 @@ class ModelSilhouettes final : public RobotSilhouettes {
   CspaceGrid grid_;
   FeatureGrid feature_grid_;
   CellEnvelope envelope_;
+  std::uint32_t subdivision_ = 1;
+  std::vector<std::uint32_t> discretised_joints_;  // the joints the sub-cells cut
+  std::optional<CellEnvelope> sub_envelope_;       // on grid_.subdivided(subdivision_)
   std::vector<BallProjection> projections_;
   std::size_t cached_bodies_ = 0;
   std::vector<std::vector<std::vector<FeatureMask>>> cached_;  // [body][prefix][camera]

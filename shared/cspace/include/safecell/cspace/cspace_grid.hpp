@@ -37,6 +37,14 @@ class CspaceGrid {
   // Validates the spec and derives the cell sizes; every refusal names the field and joint.
   static Result<CspaceGrid, GridSpecError> create(const GridSpec& spec) noexcept;
 
+  // The same joints with every discretised joint's cells cut into `factor` equal cells: cell c
+  // of this grid along such a joint holds cells c * factor .. c * factor + factor - 1 of the
+  // result (up to the rounding of the widths, about 1e-16 rad), and its max-move steps are this
+  // grid's divided by factor. The spec, m_max included, stays this grid's; the fingerprint
+  // differs through the cell counts. Used to draw a cell's envelope as the union of its sub-cells'.
+  // kInvalidArgument (field kCellCount) for factor 0; kOverflow when the cells do not fit 32 bits.
+  Result<CspaceGrid, GridSpecError> subdivided(std::uint32_t factor) const noexcept;
+
   std::uint32_t joint_count() const noexcept { return spec_.joint_count; }
   double m_max_m() const noexcept { return spec_.m_max_m; }
   const GridSpec& spec() const noexcept { return spec_; }
@@ -71,6 +79,8 @@ class CspaceGrid {
 
  private:
   bool coords_valid(const GridCoords& coords) const noexcept;
+  // Strides, cell count and fingerprint from spec_ and cells_along_ (every count >= 1).
+  Result<bool, GridSpecError> derive_from_counts() noexcept;
 
   GridSpec spec_{};
   double max_move_step_rad_[kMaxJoints]{};
