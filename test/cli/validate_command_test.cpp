@@ -40,6 +40,21 @@ TEST(ValidateCommand, ReportsTheIssuesKeysAndMissesNothing) {
   // The default cell's vote, which the coarse cell keeps: 3 of 4 cameras, blobs grown 4 cells.
   EXPECT_EQ(report["camera_threshold"].get<int>(), 3);
   EXPECT_EQ(report["occlusion_reach"].get<int>(), 4);
+  EXPECT_EQ(report["envelope_subdivision"].get<int>(), 1) << "the coarse cell draws whole cells";
+}
+
+TEST(ValidateCommand, SubCellsAreAnOptionAndInTheReport) {
+  const test::ScratchFolder scratch("safecell-validate");
+  const auto cell = test::write_coarse_cell(scratch.path());
+  const auto run =
+      test::safecell_cli(validate_args(scratch, cell, "6", {"--envelope-max-move", "0.2"}));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_EQ(report["envelope_subdivision"].get<int>(), 2);  // m_max 0.4 m cut in 2
+  EXPECT_EQ(report["missed"].get<int>(), 0);
+  const auto refused =
+      test::safecell_cli(validate_args(scratch, cell, "6", {"--envelope-max-move", "0"}));
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
 }
 
 TEST(ValidateCommand, ANegativeControlFailsTheRun) {
