@@ -1,5 +1,5 @@
 #pragma once
-// The default cell on a coarse grid (m_max 0.4 m, joint 4 swept) as a cell file, so
+// The default cell on a coarse grid (m_max 0.4 m, joint 4 swept, whole cells) as a cell file, so
 // that the command tests that build look-up tables take a moment, not seconds.
 
 #include <gtest/gtest.h>
@@ -23,6 +23,7 @@ inline std::filesystem::path write_coarse_cell(const std::filesystem::path& fold
   replace("m_max_m: 0.18", "m_max_m: 0.4");
   replace("range_deg: [-240, 240]\n    discretised: true",
           "range_deg: [-240, 240]\n    discretised: false");
+  replace("envelope_max_move_m: 0.09", "envelope_max_move_m: 0.4");  // whole cells: fast tables
   const std::filesystem::path path = folder / "coarse.yaml";
   std::ofstream(path) << yaml;
   return path;

@@ -148,6 +148,31 @@ TEST(ModelSilhouettes, ACellsSilhouetteIsTheUnionOfItsSubCells) {
   }
 }
 
+// Robot removal draws whole cells whatever the cell file says (CellDrawing::kWholeCells): the
+// same silhouettes as a cell without sub-cells. Control: the tables' drawing of the same cell
+// differs from them.
+TEST(ModelSilhouettes, RemovalDrawsWholeCellsOfACellWithSubCells) {
+  const SubCellModels models;
+  const ModelSilhouettes removal(models.cell, models.grid, ModelLutOptions{},
+                                 CellDrawing::kWholeCells);
+  EXPECT_EQ(removal.subdivision(), 1u);
+  test::PropertyRun run(40);
+  const std::size_t cameras = models.cell.cameras.size();
+  int tables_differ = 0;
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto index = static_cast<CellIndex>(run.rng()() % models.grid.cell_count());
+    std::vector<FeatureMask> drawn(cameras, FeatureMask(models.cell.feature_grid));
+    std::vector<FeatureMask> whole(cameras, FeatureMask(models.cell.feature_grid));
+    std::vector<FeatureMask> tables(cameras, FeatureMask(models.cell.feature_grid));
+    removal.add_silhouettes(index, drawn);
+    models.whole_cells.add_silhouettes(index, whole);
+    models.sub_cells.add_silhouettes(index, tables);
+    ASSERT_EQ(drawn, whole) << "cell " << index;
+    tables_differ += tables != whole ? 1 : 0;
+  }
+  EXPECT_GT(tables_differ, run.iterations() / 2) << "control: the tables draw sub-cells";
+}
+
 // Control for the check below: a silhouette drawn from one sub-cell only.
 class FirstSubCellOnly final : public RobotSilhouettes {
  public:

@@ -24,7 +24,7 @@ DefaultCellTables::DefaultCellTables()
     : cell(load_cell_model(default_cell())),
       grid(make_grid(cell.config)),
       luts(timed_build(cell, grid, build_s)),
-      silhouettes(cell, grid, ModelLutOptions{}) {}
+      silhouettes(cell, grid, ModelLutOptions{}, CellDrawing::kWholeCells) {}
 
 const DefaultCellTables& default_cell_tables() {
   static const DefaultCellTables tables;

@@ -17,7 +17,7 @@ struct DefaultCellTables {
   CspaceGrid grid;
   double build_s = 0.0;  // to build the tables
   LutSet luts;
-  ModelSilhouettes silhouettes;
+  ModelSilhouettes silhouettes;  // robot removal's: whole cells (CellDrawing::kWholeCells)
 
   DefaultCellTables();
 };

@@ -120,7 +120,7 @@ int run_replay(const ReplayOptions& options, std::ostream& out, std::ostream& er
                      fingerprint_hex(luts.set.fingerprint) + ", the incident was recorded with " +
                      fingerprint_hex(incident.setup.lut_fingerprint));
   }
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{}, CellDrawing::kWholeCells);
   const std::vector<cv::Mat> reference = read_reference_images(folder / "reference", cell);
   SensingPipeline pipeline(cell, grid, luts.set, silhouettes, reference, {},
                            service_fusion_settings(cell, incident.setup.sync_error_s));

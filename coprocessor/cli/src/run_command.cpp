@@ -240,7 +240,7 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   // The cameras first: a camera without a source is named before the tables take their time.
   FrameSetAcquirer cameras(cell_camera_sources(cell, Recordings::kLive));
   const CachedLuts luts = cell_luts(cell, grid, ModelLutOptions{}, options.lut_cache, err);
-  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{});
+  const ModelSilhouettes silhouettes(cell, grid, ModelLutOptions{}, CellDrawing::kWholeCells);
 
   std::vector<cv::Mat> reference;
   if (options.record_reference) {

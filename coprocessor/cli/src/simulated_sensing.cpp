@@ -36,7 +36,7 @@ SimulatedSensing::SimulatedSensing(const std::string& cell_path, const std::stri
     : cell(cell_with(cell_path, overrides)),
       grid(make_grid(cell.config)),
       luts(cell_luts(cell, grid, ModelLutOptions{}, lut_cache, log)),
-      silhouettes(cell, grid, ModelLutOptions{}),
+      silhouettes(cell, grid, ModelLutOptions{}, CellDrawing::kWholeCells),
       sim(simulated_cameras(cell, seed)),
       reference(reference_images(sim, cell, seed, log)),
       fusion(cell_fusion_settings(cell)),

@@ -34,7 +34,7 @@ struct SimulatedSensing {
   CellModel cell;
   CspaceGrid grid;
   CachedLuts luts;
-  ModelSilhouettes silhouettes;
+  ModelSilhouettes silhouettes;  // robot removal's: whole cells (CellDrawing::kWholeCells)
   SimulatedCell sim;
   SimulatedReference reference;
   FusionSettings fusion;

@@ -210,7 +210,7 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   validation.model_error = model_error_of(options);
   validation.needless_stops_traced_per_scene = options.traced_per_scene;
   const CachedLuts luts = cell_luts(cell, grid, tables, options.lut_cache, err);
-  const ModelSilhouettes silhouettes(cell, grid, tables);
+  const ModelSilhouettes silhouettes(cell, grid, tables, CellDrawing::kWholeCells);
   ProgressBar bar(err, &err == &std::cerr && ProgressBar::stderr_is_terminal());
   const ValidationReport report = validate_against_ground_truth(
       cell, grid, luts.set, silhouettes, validation, [&bar](std::size_t done, std::size_t total) {

@@ -77,11 +77,11 @@ void check_model_lut_options(const CellModel& cell, const ModelLutOptions& optio
 }
 
 ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid,
-                                   const ModelLutOptions& options)
+                                   const ModelLutOptions& options, CellDrawing drawing)
     : grid_(grid),
       feature_grid_(cell.feature_grid),
       envelope_(checked_envelope(cell, grid, options)),
-      subdivision_(cell.envelope_subdivision) {
+      subdivision_(drawing == CellDrawing::kWholeCells ? 1 : cell.envelope_subdivision) {
   if (subdivision_ < 1) throw std::invalid_argument("envelope subdivision 0");
   if (subdivision_ > 1) {
     sub_envelope_.emplace(checked_envelope(cell, sub_cell_grid(grid, subdivision_), options));

@@ -17,6 +17,8 @@
 // (CspaceGrid::subdivided), and the cell's silhouette is the union of its s^d sub-cells'
 // envelopes, each swept over 1/s of the width: the same robot held (every configuration of the
 // cell lies in one sub-cell), by balls that follow its path. envelope() stays the whole cell's.
+// Per-cycle robot removal draws whole cells (CellDrawing::kWholeCells): 16 sub-cells cost about
+// four times the cycle's fusion, and removal needs only a silhouette that holds the robot.
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -39,11 +41,19 @@ struct ModelLutOptions {
   PartSplit parts = PartSplit::kArmSegments;  // the parts the cameras vote on
 };
 
+// How a cell's silhouette is drawn: as the tables are (the cell file's sub-cells), or from the
+// whole cell's envelope (wider; both hold the robot at every configuration of the cell).
+enum class CellDrawing {
+  kAsTheTables,  // the table builds and their checks: what the fingerprint names
+  kWholeCells,   // robot removal once per cycle, where speed counts
+};
+
 class ModelSilhouettes final : public RobotSilhouettes {
  public:
   // Throws std::invalid_argument when the cell has no robot model or no camera, or for options
   // outside ball radius 0.005..0.5 m, padding 0..1 m.
-  ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options);
+  ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
+                   CellDrawing drawing = CellDrawing::kAsTheTables);
 
   [[nodiscard]] std::size_t camera_count() const override { return projections_.size(); }
   void add_silhouette(CellIndex cell, std::size_t camera, FeatureMask& mask) const override;
