@@ -123,6 +123,11 @@ def task_times(names):
     return with_people / compared, without / compared, contacts, scenarios
 
 
+# Commits of closed-loop runs (closed-loop-run.tsv) whose default cell drew whole cells, before
+# the sub-cells became the default (f269248).
+WHOLE_CELL_COMMITS = {"d1a9691"}
+
+
 def targets_section():
     """#15's needless-stop and task-time targets, before (threshold 2) and after."""
     names = ["target-seed-7", "target-seed-7-threshold-2", "threshold-2-main", "closed-loop-1",
@@ -130,6 +135,8 @@ def targets_section():
     if not all(os.path.exists(os.path.join(folder, name + ".json")) for name in names):
         return
     after7, before7 = report("target-seed-7"), report("target-seed-7-threshold-2")
+    with open(os.path.join(folder, "closed-loop-run.tsv")) as run_file:
+        closed_loop_commit = run_file.readline().rstrip("\n").split("\t")[1]
     before_main = report("threshold-2-main")
     with_after, without_after, contacts_after, scenarios_after = task_times(
         ["closed-loop-1", "closed-loop-2"])
@@ -137,19 +144,22 @@ def targets_section():
         ["closed-loop-before-1", "closed-loop-before-2"])
     w("### The targets of #15: before and after")
     w("")
-    w("Before: camera threshold 2 with the occlusion reach of 3 feature cells (the default cell "
-      "until 2026-12-06); after: threshold 3 with the reach of 4 (`camera_threshold: 3`, "
-      "`occlusion_reach_cells: 4`). The needless-stop target is measured as #15 states it, on "
+    w("Before: camera threshold 2 with the occlusion reach of 3 feature cells and whole cells "
+      "(the default cell until 2026-12-06); after: threshold 3 with the reach of 4 and 2 "
+      "sub-cells per joint (`camera_threshold: 3`, `occlusion_reach_cells: 4`, "
+      "`envelope_max_move_m: 0.09`). The needless-stop target is measured as #15 states it, on "
       "200 scenes of seed 7 (`" + commands["target-seed-7"] + "`); the main run's 10,000 scenes "
       "of seed 11 hold the missed count. The closed loop's \"before\" rows are its reports of "
       "2026-12-05 (commit `8311e66`, kept as `closed-loop-before-*.json`), the same "
-      "scenarios.")
+      "scenarios; its \"after\" rows ran at commit `" + closed_loop_commit + "`" +
+      (", with whole cells: not yet run again with the sub-cells." if closed_loop_commit in
+       WHOLE_CELL_COMMITS else "."))
     w("")
     w(table(["target", "goal", "before", "after"], [
         ["needless stops, seed 7, 200 scenes", "<= 10 %",
          pct(before7["needless_stop_share"]) + f" (missed {n(before7['missed'])})",
          "**" + pct(after7["needless_stop_share"]) + f"** (missed {n(after7['missed'])})"],
-        ["needless stops, the main run (seed 11, " + n(main["scenes"]) + " scenes)", "-",
+        ["needless stops, the main run (seed 11, " + n(main["scenes"]) + " scenes)", "<= 10 %",
          pct(before_main["needless_stop_share"]), pct(main["needless_stop_share"])],
         ["**missed**, the main run", "0", n(before_main["missed"]),
          "**" + n(main["missed"]) + "**"],
@@ -260,15 +270,29 @@ w("- **Camera translation** of 1 cm: inside the 2 cm. **Focal length** 1 % off m
   "9 px: less than a feature cell (11 × 9 px), covered like the rotation by the quantisation, "
   "empirically.")
 w("")
-w("A larger error does not end in a missed collision here but in a stop: the real robot's image "
-  "leaves its silhouette, its own pixels become obstacles and most of the grid is forbidden "
-  "(5°: see the forbidden share). That is safe and useless, and what `safecell luts check` and "
-  "the camera health monitor (a moved camera) are there to catch first.")
+turned = report("model-error-rotation-5deg")
+if turned["missed"] == 0:
+    w("A larger error does not end in a missed collision here but in a stop: the real robot's "
+      "image leaves its silhouette, its own pixels become obstacles and most of the grid is "
+      "forbidden (5°: see the forbidden share). That is safe and useless, and what `safecell luts "
+      "check` and the camera health monitor (a moved camera) are there to catch first.")
+else:
+    turned_scenes = sorted({c["scene"] for c in turned["missed_cases"]})
+    w("**A larger error is not covered.** With the cameras turned 5° the run missed " +
+      n(turned["missed"]) + " configuration(s), in scene(s) " +
+      ", ".join(str(x) for x in turned_scenes) + "; otherwise the real robot's image leaves its "
+      "silhouette, its own pixels become obstacles and most of the grid is forbidden (see the "
+      "forbidden share). Such a camera must be caught before its view is used: one that moved "
+      "after its reference images were taken by the camera health monitor, which makes a view "
+      "unknown when the image shifts more than 3 px against the reference (`max_shift_px`, about "
+      "0.4° on these cameras; 5° shifts it about 40 px), one calibrated wrong from the start by "
+      "`safecell luts check`, which compares the recorded robot with the model.")
 w("")
 w("## Ablation: what each setting costs and buys")
 w("")
 w("Same seed, " + n(report("ablation-padding-0")["scenes"]) + " scenes each; the baseline is the "
-  f"default (padding 2 cm, balls of 6 cm, m_max 0.18 m, threshold {main['camera_threshold']}, "
+  "default (padding 2 cm, balls of 6 cm, m_max 0.18 m with 2 sub-cells per joint, threshold "
+  f"{main['camera_threshold']}, "
   f"occlusion reach {main.get('occlusion_reach', 3)} feature cells, the cameras voting per arm "
   "segment, no hidden votes) = the occlusion-aware run above.")
 w("")
@@ -278,7 +302,8 @@ for name, label in [("removal-occlusion-aware", "default"),
                     ("ablation-padding-0.05", "padding 5 cm"),
                     ("ablation-ball-0.04", "balls of 4 cm"),
                     ("ablation-ball-0.09", "balls of 9 cm"),
-                    ("ablation-m-max-0.12", "m_max 0.12 m"),
+                    ("ablation-whole-cells", "whole cells (no sub-cells)"),
+                    ("ablation-m-max-0.12", "m_max 0.12 m, whole cells"),
                     ("ablation-threshold-2", "camera threshold 2, reach 3 (before 2026-12-06)"),
                     ("ablation-reach-3", "occlusion reach 3 feature cells"),
                     ("ablation-reach-5", "occlusion reach 5 feature cells"),
@@ -311,6 +336,15 @@ w("**The vote per robot part.** The paper counts, for a cell, the cameras that s
   " ms for the whole robot, " + f"{default['fusion_ms_p99']:.2f}" + " ms per arm segment, " +
   f"{per_link['fusion_ms_p99']:.2f}" + " ms per link. `safecell bench` measures the fusion "
   "without the validation's load.")
+if os.path.exists(os.path.join(folder, "per-link-main.json")):
+    per_link_main = report("per-link-main")
+    w("")
+    w("On the main run's " + n(per_link_main["scenes"]) + " scenes (`" +
+      commands["per-link-main"] + "`) every link voting gives needless stops of " +
+      pct(per_link_main["needless_stop_share"]) + " against " + pct(main["needless_stop_share"]) +
+      " per arm segment, **missed " + n(per_link_main["missed"]) + "** (unseen " +
+      n(per_link_main["unseen"]) + "), fusion p99 " + f"{per_link_main['fusion_ms_p99']:.2f}" +
+      " ms against " + f"{main['fusion_ms_p99']:.2f}" + " ms.")
 w("")
 two = report("ablation-threshold-2")
 reach3 = report("ablation-reach-3")
@@ -372,23 +406,23 @@ w("**Hidden votes** (`--hidden-votes on`) "
   "is what lets threshold 3 be the default.")
 w("")
 def sub_cells_section():
-    """The sub-cells (a cell file option): 2 per joint against whole cells, the same runs."""
+    """The sub-cells (the default): 2 per joint against whole cells, the same seeds and scenes."""
     sub_folder = os.path.join(folder, "sub-cells")
-    if not os.path.exists(os.path.join(sub_folder, "main.json")):
+    names = ["whole-cells-main", "target-seed-7-whole-cells", "ablation-whole-cells"]
+    if not all(os.path.exists(os.path.join(folder, name + ".json")) for name in names):
         return
 
     def sub(name):
         with open(os.path.join(sub_folder, name + ".json")) as file:
             return json.load(file)
 
-    sub_commands, sub_seconds = read_commands(os.path.join("sub-cells", "commands.tsv"))
-    sub_main, whole_main = sub("main"), sub("whole-cells-main")
-    sub7, whole7 = sub("target-seed-7"), sub("target-seed-7-whole-cells")
-    sub_small, whole_small = sub("removal-occlusion-aware"), sub("ablation-whole-cells")
-    turned, reach3 = sub("model-error-rotation-5deg"), sub("reach-3-main")
+    whole_main, whole7 = report("whole-cells-main"), report("target-seed-7-whole-cells")
+    sub_main, sub7 = main, report("target-seed-7")
+    sub_small, whole_small = report("removal-occlusion-aware"), report("ablation-whole-cells")
+    turned, reach3 = report("model-error-rotation-5deg"), report("reach-3-main")
     sub_build, whole_build = sub("build-sub-cells"), sub("build-whole-cells")
-    bench = sub("bench")
-    w("## Sub-cells: each cell's silhouette from smaller cells (an option)")
+    bench, whole_bench = sub("bench"), sub("bench-whole-cells")
+    w("## Sub-cells: each cell's silhouette from smaller cells")
     w("")
     w("A cell's envelope places the robot's balls at the cell's centre and grows each by the "
       "chord of every joint's sweep across the cell: one ball around a banana-shaped path, far "
@@ -398,19 +432,19 @@ def sub_cells_section():
       "sub-cells' envelopes, each swept over that fraction of the width. Every configuration of "
       "the cell lies in one sub-cell, so the silhouette holds the robot as before, with balls "
       "that follow its path (`CspaceGrid::subdivided`, `ModelSilhouettes`); the grid, the map and "
-      "the controller do not change. Tests: `ModelSilhouettes.ACellsSilhouetteIsTheUnionOfItsSubCells`"
-      " (against the whole cells of the subdivided grid), "
-      "`ModelSilhouettes.SubCellSilhouettesHoldTheRenderedRobotAndAreTighter` (the renderer's "
-      "meshes at random configurations; control: the corner sub-cell of 4 per joint alone misses "
-      "them) and `CspaceGrid.ASubdividedGridCutsEveryDiscretisedCellIntoEqualParts`.")
+      "the controller do not change. The default cell sets `envelope_max_move_m: 0.09` (2 per "
+      "joint, 16 sub-cells a cell); the whole-cell runs below pass `--envelope-max-move 0.18`. "
+      "Robot removal, which draws one cell's silhouette every cycle when it removes by the "
+      "robot's cell (the paper's removal, and `safecell bench`'s fusion), draws whole cells "
+      "(`CellDrawing::kWholeCells`): a silhouette that holds the robot is all it needs, and 16 "
+      "sub-cells cost about four times the rest of the fusion. Tests: "
+      "`ModelSilhouettes.ACellsSilhouetteIsTheUnionOfItsSubCells` (against the whole cells of the "
+      "subdivided grid), `ModelSilhouettes.SubCellSilhouettesHoldTheRenderedRobotAndAreTighter` "
+      "(the renderer's meshes at random configurations; control: the corner sub-cell of 4 per "
+      "joint alone misses them), `ModelSilhouettes.RemovalDrawsWholeCellsOfACellWithSubCells` and "
+      "`CspaceGrid.ASubdividedGridCutsEveryDiscretisedCellIntoEqualParts`.")
     w("")
-    w("Run on 2026-12-07 at commit `a5c62d7`, where the default cell set "
-      "`envelope_max_move_m: 0.09` (2 per joint, 16 sub-cells a cell); the whole-cell runs pass "
-      "`--envelope-max-move 0.18`. Reports and commands in `docs/validation/sub-cells/`. The "
-      "whole-cell main run repeats this page's main run (commit `d1a9691`) to the configuration: "
-      "whole cells are drawn as before.")
-    w("")
-    w(table(["figure", "whole cells", "2 sub-cells per joint"], [
+    w(table(["figure", "whole cells", "2 sub-cells per joint (default)"], [
         ["needless stops, seed 7, 200 scenes", pct(whole7["needless_stop_share"]),
          "**" + pct(sub7["needless_stop_share"]) + "**"],
         ["needless stops, seed 11, " + n(sub_main["scenes"]) + " scenes",
@@ -429,52 +463,47 @@ def sub_cells_section():
         ["table build, 2 threads (`luts build --json`)",
          f"{whole_build['build_s']:.1f} s (LUT-1 {whole_build['stage_s']['lut1_silhouettes']:.1f} s)",
          f"{sub_build['build_s']:.1f} s (LUT-1 {sub_build['stage_s']['lut1_silhouettes']:.1f} s)"],
+        ["`bench`: fusion, typical scene / 30 % blocked",
+         f"{whole_bench['fusion_ms']:.3f} / {whole_bench['fusion_thirty_percent_ms']:.3f} ms",
+         f"{bench['fusion_ms']:.3f} / {bench['fusion_thirty_percent_ms']:.3f} ms"],
+        ["`bench`: stop explanation", f"{whole_bench['stop_explanation_ms']:.2f} ms",
+         f"{bench['stop_explanation_ms']:.2f} ms"],
+        ["`bench`: end to end p50 / p99", f"{whole_bench['e2e_latency_p50_ms']:.1f} / "
+         f"{whole_bench['e2e_latency_p99_ms']:.1f} ms",
+         f"{bench['e2e_latency_p50_ms']:.1f} / {bench['e2e_latency_p99_ms']:.1f} ms"],
     ]))
     w("")
-    turned_scenes = sorted({c["scene"] for c in turned["missed_cases"]})
+    w("The `bench` rows are two runs of `safecell bench --json` one after the other on this "
+      "machine (`bench-whole-cells.json` at commit `c6c4fff`, whose default cell drew whole "
+      "cells; `bench.json` at `f269248`); the fusion's target (#15) is 0.2 ms for the typical "
+      "scene. When the sub-cells were drawn for removal too (commit `a5c62d7`), the bench's "
+      "fusion took 0.335 ms. The stop explanation reads each obstacle pixel's LUT-2 entry; it "
+      "draws no silhouette.")
+    w("")
     reach3_scenes = sorted({c["scene"] for c in reach3["missed_cases"]})
-    w("**Why it is not the default yet.** `safecell bench --json` with the sub-cells (`bench.json`"
-      " here) times the fusion with robot removal by LUT-1 of the robot's cell (the paper's "
-      "removal), which now draws 16 sub-cells each cycle: `fusion_ms` " +
-      f"{bench['fusion_ms']:.3f} ms and `fusion_thirty_percent_ms` "
-      f"{bench['fusion_thirty_percent_ms']:.3f} ms (`lut1_model_ms` {bench['lut1_model_ms']:.3f}"
-      " ms of it), against 0.075-0.080 ms and 0.047-0.050 ms with whole cells (stop 39's runs), "
-      "above #15's 0.2 ms target; the stop explanations, which draw the blocking cell's part "
-      f"silhouettes, took {bench['stop_explanation_ms']:.2f} ms, and end to end p50 "
-      f"{bench['e2e_latency_p50_ms']:.1f} ms (4.7 ms in stop 39's runs). Occlusion-aware removal "
-      "(the service's, at the frame's configuration) does not draw cells. The next step: keep "
-      "whole cells for removal and explanations (or sub-cells only in the build), then make it "
-      "the default.")
+    w("**Beyond the tolerances.** With the cameras turned 5° (ten times the documented tolerance) "
+      f"the sub-cells missed {n(turned['missed'])} configuration(s) (\"Model error\" above); "
+      "at commit `a5c62d7` they missed 1 there (scene 733, a person against the arm) where whole "
+      "cells missed 0: the wider envelope happened to cover that error, the tighter one need "
+      "not. At the reach of 3 feature cells the sub-cells miss " + n(reach3["missed"]) + " in " +
+      n(reach3["scenes"]) + " scenes (scenes " + ", ".join(str(x) for x in reach3_scenes) +
+      "), whole cells missed 3 (commit `d1a9691`): the reach of 4 stays needed.")
     w("")
-    w("**Beyond the tolerances.** With the cameras turned 5° (ten times the documented tolerance, "
-      f"{n(turned['scenes'])} scenes) the sub-cells **missed {n(turned['missed'])}** "
-      "configuration(s), in scene(s) " + ", ".join(str(x) for x in turned_scenes) +
-      " (a person against the arm), where whole cells missed 0 (\"Model error\" above): the "
-      "wider envelope happened to cover that error, the tighter one does not. Such a camera must "
-      "be caught before its view is used: the camera health monitor makes a view unknown when "
-      "the image shifts more than 3 px against the reference (`max_shift_px`, about 0.4° on "
-      "these cameras; 5° shifts it about 40 px), and `safecell luts check` compares the recorded "
-      "robot with the model. At the reach of 3 feature cells the sub-cells missed " +
-      n(reach3["missed"]) + " in " + n(reach3["scenes"]) + " scenes (scenes " +
-      ", ".join(str(x) for x in reach3_scenes) + "), where whole cells missed 3: the reach of 4 "
-      "stays needed.")
+    w("Measured beside it on seed 7's 200 scenes at commit `a5c62d7`: 3 sub-cells per joint "
+      "(`--envelope-max-move 0.06`, 81 a cell) give 8.05 % against 8.43 % for 2, at a table "
+      "build of about 3 minutes. Drawing each ball's image as the ellipse it is instead of its "
+      "bounding rectangle (`docs/validation/envelope/ball-ellipses-experiment.patch`: exact per "
+      "row of feature cells, with its test) gives 8.91 % alone and 8.03 % with 2 sub-cells per "
+      "joint, missed 0; not merged: computed per row it made LUT-1 ten times slower (1.4 -> 14 s; "
+      "with the sub-cells 29 -> 279 s), and robot removal, which drew the robot's balls every "
+      "cycle, doubled the fusion's p99 in the validation (0.70 -> 1.28 ms). The levers do not "
+      "add up: each takes part of the same slack around the arm.")
     w("")
-    w("Measured beside it on seed 7's 200 scenes: 3 sub-cells per joint (`--envelope-max-move "
-      "0.06`, 81 a cell) give 8.05 % against 8.43 % for 2, at a table build of about 3 minutes. "
-      "Drawing each ball's image as the ellipse it is instead of its bounding rectangle "
-      "(`docs/validation/envelope/ball-ellipses-experiment.patch`: exact per row of feature "
-      "cells, with its test) gives 8.91 % alone and 8.03 % with 2 sub-cells per joint, missed 0; "
-      "not merged: computed per row it made LUT-1 ten times slower (1.4 -> 14 s; with the "
-      "sub-cells 29 -> 279 s), and robot removal, which draws the robot's balls every cycle, "
-      "doubled the fusion's p99 in the validation (0.70 -> 1.28 ms). The levers do not add up: "
-      "each takes part of the same slack around the arm.")
-    w("")
-    import re
-    w("Commands (seconds on this machine), run with the default cell of `a5c62d7`: on today's "
-      "default cell the sub-cell runs need `--envelope-max-move 0.09` added: " + "; ".join(
-        "`" + re.sub(r"--lut-cache \S+", "--lut-cache CACHE", sub_commands[name]) + "` (" +
-        str(sub_seconds[name]) + ")" for name in sub_commands) + "; `safecell luts build --json` "
-      "and `safecell bench --json` for the builds and the bench.")
+    sub_commands, sub_seconds = read_commands(os.path.join("sub-cells", "commands.tsv"))
+    w("Commands (seconds on this machine) of the builds and benches in `docs/validation/"
+      "sub-cells/`: " + "; ".join(
+        "`" + sub_commands[name] + "` (" + str(sub_seconds[name]) + ")" for name in sub_commands) +
+      "; the validation runs are in `commands.tsv`.")
     w("")
 
 

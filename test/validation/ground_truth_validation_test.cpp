@@ -21,7 +21,8 @@ struct DefaultTables {
   CellModel cell = load_cell_model(default_cell());
   CspaceGrid grid = make_grid(cell.config);
   LutSet luts = build_model_luts(cell, grid);
-  ModelSilhouettes silhouettes{cell, grid, ModelLutOptions{}};
+  // Robot removal's, as `safecell validate` draws them: whole cells.
+  ModelSilhouettes silhouettes{cell, grid, ModelLutOptions{}, CellDrawing::kWholeCells};
 };
 
 class GroundTruthValidation : public ::testing::Test {

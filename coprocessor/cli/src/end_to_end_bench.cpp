@@ -91,6 +91,9 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
   // under load the controller applied maps 5 ms "before" it.)
   std::map<std::uint64_t, double> send_started_of;
   std::vector<double> to_sent_ms;
+  std::vector<double> features_ms;
+  std::vector<double> fusion_ms;
+  std::vector<double> rest_ms;
   auto next = Clock::now();
   for (std::size_t k = 0; k < figures.frames; ++k) {
     next += period;
@@ -104,6 +107,9 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
     send_started_of[cycle.map_version] =
         (static_cast<double>(cycle.send_started_ns) - static_cast<double>(start_ns)) * 1e-9;
     to_sent_ms.push_back(static_cast<double>(cycle.sent_ns - cycle.exposure_ns) * 1e-6);
+    features_ms.push_back(cycle.times.features_ms);
+    fusion_ms.push_back(cycle.times.fusion_ms);
+    rest_ms.push_back(to_sent_ms.back() - cycle.times.features_ms - cycle.times.fusion_ms);
     service.serve_link(next);
   }
   service.serve_link(Clock::now() + std::chrono::milliseconds(50));
@@ -131,6 +137,9 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
   figures.latency_max_ms = percentile(latency_ms, 1.0);
   figures.to_sent_p50_ms = percentile(to_sent_ms, 0.5);
   figures.to_sent_p99_ms = percentile(to_sent_ms, 0.99);
+  figures.features_p50_ms = percentile(features_ms, 0.5);
+  figures.fusion_p50_ms = percentile(fusion_ms, 0.5);
+  figures.rest_p50_ms = percentile(rest_ms, 0.5);
 
   // Back to back: as fast as the service goes, serving the link between frames.
   const std::size_t sustained = quick ? 30 : 300;

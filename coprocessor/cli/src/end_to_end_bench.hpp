@@ -18,6 +18,12 @@ struct EndToEndFigures {
   double latency_max_ms = 0.0;
   double to_sent_p50_ms = 0.0;  // exposure -> the update's last frame sent (the pipeline)
   double to_sent_p99_ms = 0.0;
+  // Where to_sent goes, per frame: the features (frames to blocked masks, all cameras), the
+  // fusion (robot removal, separation check, vote), and the rest (the camera health checks, the
+  // robot's pose at the exposure, the map's coding and sending).
+  double features_p50_ms = 0.0;
+  double fusion_p50_ms = 0.0;
+  double rest_p50_ms = 0.0;
   std::size_t updates_not_applied = 0;  // of those frames, maps the controller never held
   // Over the updates applied: the least of (applied in the controller - sending began), the
   // controller's clock brought onto the coprocessor's. Below 0 by more than the clock offset's
