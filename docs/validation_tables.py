@@ -24,6 +24,11 @@ def read_commands(file_name):
 commands, seconds = read_commands("commands.tsv")
 
 
+def missed_scenes(r):
+    """The scenes a run missed configurations in, in order."""
+    return sorted({c["scene"] for c in r["missed_cases"]})
+
+
 def report(name):
     with open(os.path.join(folder, name + ".json")) as f:
         return json.load(f)
@@ -277,7 +282,7 @@ if turned["missed"] == 0:
       "forbidden (5°: see the forbidden share). That is safe and useless, and what `safecell luts "
       "check` and the camera health monitor (a moved camera) are there to catch first.")
 else:
-    turned_scenes = sorted({c["scene"] for c in turned["missed_cases"]})
+    turned_scenes = missed_scenes(turned)
     w("**A larger error is not covered.** With the cameras turned 5° the run missed " +
       n(turned["missed"]) + " configuration(s), in scene(s) " +
       ", ".join(str(x) for x in turned_scenes) + "; otherwise the real robot's image leaves its "
@@ -353,7 +358,7 @@ hidden = report("ablation-hidden-votes")
 hidden_two = report("ablation-hidden-votes-threshold-2")
 before = report("threshold-2-main")
 reach3_main = report("reach-3-main")
-missed_scenes = sorted({c["scene"] for c in reach3_main["missed_cases"]})
+reach3_missed = missed_scenes(reach3_main)
 w("**The camera threshold and the occlusion reach.** With 4 cameras a cell is critical when "
   f"{main['camera_threshold']} of them suspect it through one robot part (the default cell's "
   "`camera_threshold`). Until 2026-12-06 it was 2: most of what that stops for are phantoms, "
@@ -370,8 +375,8 @@ w("Threshold 3 alone is not safe: a person standing against the arm may have the
   "`occlusion_reach_cells` says how far, in feature cells. With the reach of 3 (about 20 cm at "
   "3 m; the default before) threshold 3 **missed " + n(reach3_main["missed"]) + "** "
   "configurations on the main run's " + n(reach3_main["scenes"]) + " scenes, in " +
-  n(len(missed_scenes)) + " scenes of people against the arm (scenes " +
-  ", ".join(str(s) for s in missed_scenes) + "; each person visible in 4 cameras, the part that "
+  n(len(reach3_missed)) + " scenes of people against the arm (scenes " +
+  ", ".join(str(s) for s in reach3_missed) + "; each person visible in 4 cameras, the part that "
   "collides hidden by the arm from two), needless stops " +
   pct(reach3_main["needless_stop_share"]) + ". With the reach of " +
   str(main.get("occlusion_reach", 3)) + " (about 27 cm at 3 m) it misses " + n(main["missed"]) + " (the main run above). The test "
@@ -480,7 +485,7 @@ def sub_cells_section():
       "fusion took 0.335 ms. The stop explanation reads each obstacle pixel's LUT-2 entry; it "
       "draws no silhouette.")
     w("")
-    reach3_scenes = sorted({c["scene"] for c in reach3["missed_cases"]})
+    reach3_scenes = missed_scenes(reach3)
     w("**Beyond the tolerances.** With the cameras turned 5° (ten times the documented tolerance) "
       f"the sub-cells missed {n(turned['missed'])} configuration(s) (\"Model error\" above); "
       "at commit `a5c62d7` they missed 1 there (scene 733, a person against the arm) where whole "
