@@ -116,6 +116,12 @@ TEST(CellFile, EntriesAndTheirSeparation) {
   EXPECT_EQ(error_of(std::string(kTwoJoints) + "entry_separation: {speed: 1}\n"),
             "bad.yaml:11: entry_separation.speed: unknown field (expected one of: "
             "approach_speed_m_s, response_s, stopping_s, intrusion_m)");
+  // A key given twice would have its later line ignored.
+  EXPECT_EQ(error_of(std::string(kTwoJoints) + "camera_threshold: 1\ncamera_threshold: 2\n"),
+            "bad.yaml:12: camera_threshold: given twice (first on line 11)");
+  EXPECT_EQ(
+      error_of(std::string(kTwoJoints) + "entry_separation: {response_s: 0.1, response_s: 0.2}\n"),
+      "bad.yaml:11: entry_separation.response_s: given twice (first on line 11)");
 }
 
 TEST(CellFile, TheProtectiveSeparationIsOnUnlessTheCellTurnsItOff) {

@@ -165,6 +165,31 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
             "cell.yaml:11: envelope_max_move_m: value 0.000000, expected a distance above 0 m");
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "envelope_max_move_m: -1\n"),
             "cell.yaml:11: envelope_max_move_m: value -1.000000, expected a distance above 0 m");
+  const auto parts = [](const std::string& split) {
+    return load_cell_model(
+               parse_cell_yaml(std::string(kBuiltinCell) + "robot_parts: " + split + "\n",
+                               "c.yaml"))
+        .robot_parts;
+  };
+  EXPECT_EQ(load_cell_model(parse_cell_yaml(std::string(kBuiltinCell), "c.yaml")).robot_parts,
+            PartSplit::kArmSegments);
+  EXPECT_EQ(parts("per-link"), PartSplit::kPerLink);
+  EXPECT_EQ(parts("arm-segments"), PartSplit::kArmSegments);
+  EXPECT_EQ(parts("whole-robot"), PartSplit::kWholeRobot);
+  EXPECT_EQ(load_cell_model(parse_cell_yaml(std::string(kBuiltinCell), "c.yaml")).ball_radius_m,
+            kDefaultBallRadius_m);
+  EXPECT_EQ(load_cell_model(
+                parse_cell_yaml(std::string(kBuiltinCell) + "ball_radius_m: 0.04\n", "c.yaml"))
+                .ball_radius_m,
+            0.04);
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "ball_radius_m: 0.001\n"),
+            "cell.yaml:11: ball_radius_m: value 0.001000, expected 0.005000 to 0.500000 m");
+  EXPECT_NE(model_error_of(std::string(kBuiltinCell) + "ball_radius_m: .nan\n")
+                .find("expected 0.005000 to 0.500000 m"),
+            std::string::npos);
+  EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "robot_parts: per-joint\n"),
+            "cell.yaml:11: robot_parts: value 'per-joint', expected per-link, arm-segments or "
+            "whole-robot");
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) +
                            "obstacles:\n  - {name: t, size_m: [1, -1, 1], centre_m: [0, 0, 0]}\n"),
             "cell.yaml:12: obstacles[0].size_m: value -1.000000, expected edge lengths above 0 m");

@@ -53,10 +53,11 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto report = nlohmann::json::parse(run.out);
   for (const char* key :
-       {"features_ms", "features_worst_ms", "sim_render_ms", "sim_render_worst_ms", "fusion_ms",
-        "fusion_worst_ms", "fusion_baseline_ms", "fusion_speedup", "lut_bytes_per_camera",
-        "lut_build_s", "frame_encode_us", "frame_check_us", "crc_mb_s", "delta_bytes_p50",
-        "delta_bytes_p99", "keyframe_bytes", "delta_encode_us", "protective_separation_ms"}) {
+       {"features_ms", "features_worst_ms", "health_check_ms", "sim_render_ms",
+        "sim_render_worst_ms", "fusion_ms", "fusion_worst_ms", "fusion_baseline_ms",
+        "fusion_speedup", "lut_bytes_per_camera", "lut_build_s", "frame_encode_us",
+        "frame_check_us", "crc_mb_s", "delta_bytes_p50", "delta_bytes_p99", "keyframe_bytes",
+        "delta_encode_us", "protective_separation_ms"}) {
     ASSERT_TRUE(report.contains(key)) << key;
     EXPECT_GT(report[key].get<double>(), 0.0) << key;
   }
@@ -64,6 +65,10 @@ TEST(BenchCommand, JsonCarriesTheNamedFiguresOfEveryBenchmark) {
   const auto& masks = report["benchmarks"]["four_frames_to_blocked_masks"]["counters"];
   EXPECT_GT(masks["blocked_cells"].get<double>(), 0.0);  // the human is seen
   EXPECT_EQ(masks["blocked_cells_empty_scene"].get<double>(), 0.0);
+  // The health check timed its whole path: no frame ended early as a fault.
+  EXPECT_EQ(
+      report["benchmarks"]["camera_health_check_one_frame"]["counters"]["faults"].get<double>(),
+      0.0);
   // The fusion sees the person near the robot, and the tables stay within the 5 MB target.
   const auto& fusion = report["benchmarks"]["fusion_typical_scene"]["counters"];
   EXPECT_GT(fusion["obstacle_pixels"].get<double>(), 0.0);

@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
 
 #include "cli_run.hpp"
 #include "coarse_cell.hpp"
@@ -41,6 +44,39 @@ TEST(ValidateCommand, ReportsTheIssuesKeysAndMissesNothing) {
   EXPECT_EQ(report["camera_threshold"].get<int>(), 3);
   EXPECT_EQ(report["occlusion_reach"].get<int>(), 4);
   EXPECT_EQ(report["envelope_subdivision"].get<int>(), 1) << "the coarse cell draws whole cells";
+  EXPECT_EQ(report["robot_parts"].get<std::string>(), "arm-segments");
+  EXPECT_EQ(report["ball_radius_m"].get<double>(), 0.06);
+}
+
+// The cell file's robot parts and balls are the tables' and the report's; the options override.
+TEST(ValidateCommand, TheCellsRobotPartsAndBallsAreTheRunsUnlessTheOptionsSay) {
+  const test::ScratchFolder scratch("safecell-validate");
+  const auto cell = test::write_coarse_cell(scratch.path());
+  std::string yaml;
+  {
+    std::ifstream in(cell);
+    yaml.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"robot_parts: arm-segments", "robot_parts: per-link"},
+        {"ball_radius_m: 0.06", "ball_radius_m: 0.05"}}) {
+    const auto at = yaml.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+  }
+  std::ofstream(cell) << yaml;
+  const auto run = test::safecell_cli(validate_args(scratch, cell, "2"));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_EQ(report["robot_parts"].get<std::string>(), "per-link");
+  EXPECT_EQ(report["ball_radius_m"].get<double>(), 0.05);
+  EXPECT_EQ(report["missed"].get<int>(), 0);
+  const auto overridden = test::safecell_cli(
+      validate_args(scratch, cell, "2", {"--robot-parts", "whole-robot", "--ball-radius", "0.07"}));
+  ASSERT_EQ(overridden.exit_code, 0) << overridden.err << overridden.out;
+  const auto other = nlohmann::json::parse(overridden.out);
+  EXPECT_EQ(other["robot_parts"].get<std::string>(), "whole-robot");
+  EXPECT_EQ(other["ball_radius_m"].get<double>(), 0.07);
 }
 
 TEST(ValidateCommand, SubCellsAreAnOptionAndInTheReport) {
@@ -117,6 +153,10 @@ TEST(ValidateCommand, RefusesUnknownOptionValues) {
   const auto reach = test::safecell_cli({"validate", "--scenes", "1", "--occlusion-reach", "-1"});
   EXPECT_EQ(reach.exit_code, 2);
   EXPECT_NE(reach.err.find("--occlusion-reach"), std::string::npos) << reach.err;
+  const auto parts =
+      test::safecell_cli({"validate", "--scenes", "1", "--robot-parts", "per-joint"});
+  EXPECT_EQ(parts.exit_code, 2);
+  EXPECT_NE(parts.err.find("--robot-parts 'per-joint'"), std::string::npos) << parts.err;
 }
 
 }  // namespace

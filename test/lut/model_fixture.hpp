@@ -2,6 +2,7 @@
 // The default cell on a coarse grid (m_max 0.4 m, joints 1-3 discretised, a few thousand cells), so
 // that the model tests can afford to check every cell; and random configurations inside a cell.
 
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -23,16 +24,17 @@ inline CellConfig coarse_default_config() {
 
 inline CellModel coarse_default_cell() { return load_cell_model(coarse_default_config()); }
 
-inline ModelLutOptions options_with(PartSplit parts) {
+inline ModelLutOptions options_with(std::optional<PartSplit> parts) {
   ModelLutOptions options;
   options.parts = parts;
   return options;
 }
 
 // The coarse default cell with its model-mode tables and silhouettes, the cameras voting on the
-// robot parts of `parts`.
+// robot parts of `parts` (unset: the cell's).
 struct CoarseTables {
-  explicit CoarseTables(PartSplit parts = ModelLutOptions{}.parts) : options(options_with(parts)) {}
+  explicit CoarseTables(std::optional<PartSplit> parts = std::nullopt)
+      : options(options_with(parts)) {}
   ModelLutOptions options;
   CellModel cell = coarse_default_cell();
   CspaceGrid grid = make_grid(cell.config);

@@ -85,8 +85,8 @@ CellEnvelope envelope_with_head(const CellModel& cell, const CspaceGrid& grid,
                                 std::size_t max_head_prefixes,
                                 const std::vector<std::size_t>& part_starts = {}) {
   const ModelLutOptions options;
-  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                      options.padding_m, part_starts, max_head_prefixes);
+  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, ball_radius_of(cell, options)),
+                      grid, options.padding_m, part_starts, max_head_prefixes);
 }
 
 TEST_F(ModelLuts, EnvelopeHoldsTheRobotAnywhereInTheCell) {
@@ -292,9 +292,25 @@ TEST_F(ModelLuts, SetCarriesTheFingerprintOfItsInputs) {
   CellModel moved = *cell_;
   moved.obstacles[0].pose.translation().x() += 0.01;
   EXPECT_NE(model_lut_fingerprint(moved, *grid_, ModelLutOptions{}), set.fingerprint);
-  EXPECT_NE(model_lut_fingerprint(*cell_, *grid_, test::options_with(PartSplit::kPerLink)),
+  // The parts voting: the cell's unless the options say; another split is other tables.
+  const PartSplit other =
+      cell_->robot_parts == PartSplit::kPerLink ? PartSplit::kArmSegments : PartSplit::kPerLink;
+  EXPECT_NE(model_lut_fingerprint(*cell_, *grid_, test::options_with(other)), set.fingerprint);
+  EXPECT_EQ(model_lut_fingerprint(*cell_, *grid_, test::options_with(cell_->robot_parts)),
             set.fingerprint);
-  EXPECT_EQ(set.parts.size(), robot_parts(*cell_->robot, ModelLutOptions{}.parts).size());
+  CellModel other_cell = *cell_;
+  other_cell.robot_parts = other;
+  EXPECT_EQ(model_lut_fingerprint(other_cell, *grid_, ModelLutOptions{}),
+            model_lut_fingerprint(*cell_, *grid_, test::options_with(other)));
+  EXPECT_EQ(set.parts.size(), robot_parts(*cell_->robot, cell_->robot_parts).size());
+  // The balls' size: the cell's unless the options say.
+  CellModel smaller_balls = *cell_;
+  smaller_balls.ball_radius_m = cell_->ball_radius_m * 0.75;
+  EXPECT_NE(model_lut_fingerprint(smaller_balls, *grid_, ModelLutOptions{}), set.fingerprint);
+  ModelLutOptions with_radius;
+  with_radius.ball_radius_m = smaller_balls.ball_radius_m;
+  EXPECT_EQ(model_lut_fingerprint(*cell_, *grid_, with_radius),
+            model_lut_fingerprint(smaller_balls, *grid_, ModelLutOptions{}));
   for (const CameraLuts& camera : set.cameras) EXPECT_EQ(camera.parts.size(), set.parts.size());
 }
 

@@ -18,14 +18,14 @@ TEST(TailBounds, HoldEveryBallOfTheTail) {
   const CellModel cell = test::coarse_default_cell();
   const CspaceGrid grid = make_grid(cell.config);
   std::vector<std::size_t> part_starts;
-  for (const RobotPart& part : robot_parts(*cell.robot, ModelLutOptions{}.parts)) {
+  for (const RobotPart& part : robot_parts(*cell.robot, cell.robot_parts)) {
     part_starts.push_back(part.first_body);
   }
   const std::size_t along_1 = grid.cells_along(0);
   const std::size_t along_2 = grid.cells_along(1);
   for (const std::size_t head_prefixes : {std::size_t{1}, along_1, along_1 * along_2}) {
-    const CellEnvelope envelope(*cell.robot, cover_with_balls(*cell.robot, 0.06), grid, 0.02,
-                                part_starts, head_prefixes);
+    const CellEnvelope envelope(*cell.robot, cover_with_balls(*cell.robot, cell.ball_radius_m),
+                                grid, 0.02, part_starts, head_prefixes);
     std::vector<Ball> balls;
     std::vector<Ball> bounds;
     std::size_t bounded_cells = 0;

@@ -18,6 +18,7 @@
 #include "safecell/features/feature_extractor.hpp"
 #include "safecell/features/noise_bits.hpp"
 #include "safecell/features/noise_cut.hpp"
+#include "safecell/health/camera_health_monitor.hpp"
 #include "safecell/sim/cell_simulation.hpp"
 
 namespace safecell {
@@ -135,6 +136,24 @@ void feature_images_of_one_frame(benchmark::State& state) {
   }
 }
 
+// One camera's health check of a frame (camera_health_monitor.hpp), as the service runs it on
+// every camera every cycle: the frame with the human and a frame of the empty cell in turn, against
+// the empty cell's reference. Counter "faults": frames the check found faulty, which return before
+// the alignment and so time less than a healthy frame; 0 when the figure is the healthy path's.
+void camera_health_check_one_frame(benchmark::State& state) {
+  const CameraSetUp& camera = set_up()[0];
+  CameraHealthMonitor monitor("cam0", camera.empty_frame);
+  const cv::Mat* frames[] = {&camera.current_frame, &camera.empty_frame};
+  std::size_t checked = 0;
+  double faults = 0.0;
+  while (state.KeepRunning()) {
+    const HealthReport report = monitor.check(*frames[checked++ % 2]);
+    faults += report.healthy() ? 0.0 : 1.0;
+    benchmark::DoNotOptimize(report);
+  }
+  state.counters["faults"] = faults;
+}
+
 }  // namespace
 
 void register_feature_benchmarks() {
@@ -143,6 +162,8 @@ void register_feature_benchmarks() {
   register_benchmark("four_frames_to_blocked_masks_separate_cut",
                      four_frames_to_blocked_masks_separate_cut, benchmark::kMillisecond);
   register_benchmark("feature_images_of_one_frame", feature_images_of_one_frame,
+                     benchmark::kMillisecond);
+  register_benchmark("camera_health_check_one_frame", camera_health_check_one_frame,
                      benchmark::kMillisecond);
 }
 

@@ -156,7 +156,7 @@ void protective_separation_typical_scene(benchmark::State& state) {
   const std::vector<double> q = fusion.q;
   engine.fuse(fusion.typical, fusion.robot_cell, q);
   const ProtectiveSeparation check(
-      fusion.cell, fusion.luts.parts, ModelLutOptions{}.ball_radius_m, FusionSettings{}.padding_m,
+      fusion.cell, fusion.luts.parts, fusion.cell.ball_radius_m, FusionSettings{}.padding_m,
       separation_levels(default_protective_separation(), default_reduced_speeds()),
       fusion.cell.camera_threshold);
   std::vector<bool> known(fusion.typical.size(), true);

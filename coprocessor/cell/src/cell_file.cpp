@@ -355,7 +355,8 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
   refuse_unknown_keys(
       top, {"name", "m_max_m", "robot", "joints", "size_m", "cameras", "obstacles", "feature_grid",
             "blocked_cells", "camera_threshold", "occlusion_reach_cells", "envelope_max_move_m",
-            "blind_spots", "entries", "entry_separation", "protective_separation"});
+            "ball_radius_m", "robot_parts", "blind_spots", "entries", "entry_separation",
+            "protective_separation"});
 
   CellConfig cell;
   cell.source = source;
@@ -425,6 +426,16 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
     const Field max_move = require(top, "envelope_max_move_m");
     cell.envelope_max_move_m = number_of(max_move);
     cell.envelope_max_move_at = max_move.at;
+  }
+  if (root["ball_radius_m"]) {
+    const Field radius = require(top, "ball_radius_m");
+    cell.ball_radius_m = number_of(radius);
+    cell.ball_radius_at = radius.at;
+  }
+  if (root["robot_parts"]) {
+    const Field parts = require(top, "robot_parts");
+    cell.robot_parts = text_of(parts);
+    cell.robot_parts_at = parts.at;
   }
   if (root["blind_spots"]) {
     const Field blind_spots = require(top, "blind_spots");

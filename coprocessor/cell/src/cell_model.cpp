@@ -127,6 +127,26 @@ void settle_envelope_subdivision(CellModel& model) {
       std::clamp(parts, 1.0, static_cast<double>(kMaxEnvelopeSubdivision)));
 }
 
+void settle_balls_and_parts(CellModel& model) {
+  const CellConfig& cell = model.config;
+  if (cell.ball_radius_m) {
+    const double radius = *cell.ball_radius_m;
+    if (!(radius >= kMinBallRadius_m && radius <= kMaxBallRadius_m)) {
+      throw_cell_error(cell.ball_radius_at, "ball_radius_m",
+                       "value " + std::to_string(radius) + ", expected " +
+                           std::to_string(kMinBallRadius_m) + " to " +
+                           std::to_string(kMaxBallRadius_m) + " m");
+    }
+    model.ball_radius_m = radius;
+  }
+  if (!cell.robot_parts) return;
+  if (!parse_part_split(*cell.robot_parts, model.robot_parts)) {
+    throw_cell_error(
+        cell.robot_parts_at, "robot_parts",
+        "value '" + *cell.robot_parts + "', expected per-link, arm-segments or whole-robot");
+  }
+}
+
 void settle_scene(CellModel& model) {
   const CellConfig& cell = model.config;
   for (const double size : cell.size_m) {
@@ -159,6 +179,7 @@ void settle_scene(CellModel& model) {
     model.occlusion_reach_cells = reach;
   }
   settle_envelope_subdivision(model);
+  settle_balls_and_parts(model);
 }
 
 void settle_joints_without_robot(const CellConfig& cell) {
@@ -187,7 +208,9 @@ CellModel load_cell_model(CellConfig config) {
                   std::nullopt,
                   1,
                   kDefaultFeatureWeights,
-                  kDefaultBlockedThreshold};
+                  kDefaultBlockedThreshold,
+                  PartSplit::kArmSegments,
+                  kDefaultBallRadius_m};
   if (model.config.robot) {
     model.robot = load_robot(*model.config.robot);
     settle_from_robot(model);

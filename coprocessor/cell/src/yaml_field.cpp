@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "safecell/cell/cell_error.hpp"
@@ -21,8 +22,16 @@ std::string shown(const YAML::Node& node) {
 }
 
 void refuse_unknown_keys(const Field& map, std::initializer_list<std::string_view> known) {
+  // yaml-cpp keeps a repeated key and answers the first: the later line would be ignored.
+  std::map<std::string, SourceLine> seen;
   for (const auto& entry : map.node) {
     const auto key = entry.first.as<std::string>();
+    const SourceLine at = line_of(entry.first, map.at.source);
+    const auto [first, inserted] = seen.emplace(key, at);
+    if (!inserted) {
+      throw_cell_error(at, (map.path.empty() ? "" : map.path + ".") + key,
+                       "given twice (first on line " + std::to_string(first->second.line) + ")");
+    }
     bool found = false;
     std::string expected;
     for (const auto name : known) {

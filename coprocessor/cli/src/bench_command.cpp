@@ -30,6 +30,7 @@ struct NamedFigure {
 };
 constexpr NamedFigure kNamedFigures[] = {
     {"four_frames_to_blocked_masks", "features_ms", "features_worst_ms"},
+    {"camera_health_check_one_frame", "health_check_ms", "health_check_worst_ms"},
     {"render_four_default_cameras", "sim_render_ms", "sim_render_worst_ms"},
     {"fusion_typical_scene", "fusion_ms", "fusion_typical_worst_ms"},
     {"fusion_thirty_percent_blocked", "fusion_thirty_percent_ms", "fusion_worst_ms"},

@@ -24,6 +24,7 @@
 #include "safecell/lut_build/pixel_table_check.hpp"
 #include "safecell/lut_files/lut_cache.hpp"
 #include "safecell/lut_files/lut_file.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 
 namespace safecell {
 namespace {
@@ -198,7 +199,7 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
   // The same tables as the commands that run the pipeline use, so that they find them cached.
   const CellModel cell = tables_cell(loaded, grid, err);
   ModelLutOptions lut_options;
-  lut_options.ball_radius_m = options.ball_radius_m;
+  if (options.ball_radius_m > 0.0) lut_options.ball_radius_m = options.ball_radius_m;
   lut_options.padding_m = options.padding_m;
   lut_options.threads = options.threads;
   const fs::path folder =
@@ -283,6 +284,8 @@ int run_luts_info(const LutsInfoOptions& options, std::ostream& out, std::ostrea
 
 void add_luts_build_and_info_commands(CLI::App& luts, CommandLine& line) {
   const auto build = std::make_shared<LutsBuildOptions>();
+  // The padding the service's tables are built with (run, replay and the demo look them up).
+  build->padding_m = ModelLutOptions{}.padding_m;
   CLI::App* build_command = luts.add_subcommand(
       "build",
       "Build the tables of a cell from its robot model and camera calibrations (model mode) into "
@@ -294,8 +297,7 @@ void add_luts_build_and_info_commands(CLI::App& luts, CommandLine& line) {
                             "($SAFECELL_CACHE or ~/.cache/safecell)");
   build_command
       ->add_option("--ball-radius", build->ball_radius_m,
-                   "Size of the balls covering the robot, metres")
-      ->capture_default_str()
+                   "Size of the balls covering the robot, metres (default: the cell's)")
       ->check(CLI::Range(0.005, 0.5));
   build_command
       ->add_option("--padding", build->padding_m,

@@ -65,12 +65,11 @@ void refuse_options_of_the_other_loop(const CLI::App& validate, bool closed_loop
   }
 }
 
-PartSplit parts_of(const std::string& text) {
+void check_robot_parts(const std::string& text) {
   PartSplit split = PartSplit::kArmSegments;
-  if (!parse_part_split(text, split)) {
-    bad_option("--robot-parts", text, "arm-segments, per-link or whole-robot");
+  if (!text.empty() && !parse_part_split(text, split)) {
+    bad_option("--robot-parts", text, "per-link, arm-segments or whole-robot");
   }
-  return split;
 }
 
 NegativeControl control_of(const std::string& text) {
@@ -191,10 +190,13 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   if (options.camera_threshold > 0) config.camera_threshold = options.camera_threshold;
   if (options.occlusion_reach >= 0) config.occlusion_reach_cells = options.occlusion_reach;
   if (options.envelope_max_move_m > 0.0) config.envelope_max_move_m = options.envelope_max_move_m;
+  if (options.ball_radius_m > 0.0) config.ball_radius_m = options.ball_radius_m;
+  check_robot_parts(options.robot_parts);
+  if (!options.robot_parts.empty()) config.robot_parts = options.robot_parts;
   const CellModel cell = load_cell_model(std::move(config));
   const CspaceGrid grid = make_grid(cell.config);
-  ModelLutOptions tables{options.ball_radius_m, options.padding_m};
-  tables.parts = parts_of(options.robot_parts);
+  ModelLutOptions tables;
+  tables.padding_m = options.padding_m;
   ValidationOptions validation;
   validation.scenes = options.scenes;
   validation.seed = options.seed;
@@ -225,8 +227,8 @@ int run_validate(const ValidateOptions& options, std::ostream& out, std::ostream
   run.removal = options.removal;
   run.negative_control = options.negative_control;
   run.padding_m = options.padding_m;
-  run.ball_radius_m = options.ball_radius_m;
-  run.robot_parts = options.robot_parts;
+  run.ball_radius_m = cell.ball_radius_m;
+  run.robot_parts = to_string(cell.robot_parts);
   run.hidden_votes = options.hidden_votes;
   run.occlusion_reach = validation.fusion.occlusion_reach;
   run.m_max_m = cell.config.m_max_m;
@@ -278,6 +280,8 @@ int run_validate_merge(const ValidateMergeOptions& options, std::ostream& out) {
 
 void add_validate_command(CLI::App& app, CommandLine& line) {
   const auto validate = std::make_shared<ValidateOptions>();
+  // The padding of the tables under test: the service's.
+  validate->padding_m = ModelLutOptions{}.padding_m;
   CLI::App* validate_command = app.add_subcommand(
       "validate",
       "Run the sensing pipeline on random simulated scenes and compare the forbidden map with "
@@ -317,14 +321,12 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
       ->check(CLI::Range(0.0, 1.0));
   validate_command
       ->add_option("--ball-radius", validate->ball_radius_m,
-                   "Size of the balls covering the robot, metres")
-      ->capture_default_str()
+                   "Size of the balls covering the robot, metres (default: the cell's)")
       ->check(CLI::Range(0.005, 0.5));
-  validate_command
-      ->add_option("--robot-parts", validate->robot_parts,
-                   "The robot parts the cameras vote on: arm-segments (base | links 1-2 | the "
-                   "rest), per-link or whole-robot (the paper's vote)")
-      ->capture_default_str();
+  validate_command->add_option(
+      "--robot-parts", validate->robot_parts,
+      "The robot parts the cameras vote on: per-link, arm-segments (base | links "
+      "1-2 | the rest) or whole-robot (the paper's vote) (default: the cell's)");
   validate_command
       ->add_option("--hidden-votes", validate->hidden_votes,
                    "Whether a camera whose view of a cell the robot hides votes for it where "

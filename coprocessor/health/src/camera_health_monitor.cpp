@@ -10,14 +10,16 @@ namespace safecell {
 namespace {
 
 // Alignment is measured at a quarter of the resolution: fast, and a shift of a few pixels at
-// full size still shows.
+// full size still shows (an eighth measured a 3.4 px shift as 2.4 px: too coarse). In single
+// precision: the phase correlation of 176 x 144 pixels takes about half the time of doubles,
+// and the peak's sub-pixel position needs no more digits.
 constexpr double kAlignmentScale = 0.25;
 
 cv::Mat small_float(const cv::Mat& frame) {
   cv::Mat small;
   cv::resize(frame, small, cv::Size(), kAlignmentScale, kAlignmentScale, cv::INTER_AREA);
   cv::Mat as_float;
-  small.convertTo(as_float, CV_64F);
+  small.convertTo(as_float, CV_32F);
   return as_float;
 }
 
@@ -44,7 +46,7 @@ CameraHealthMonitor::CameraHealthMonitor(std::string camera_name, const cv::Mat&
   }
   reference_mean_ = cv::mean(reference_)[0];
   reference_small_ = small_float(reference_);
-  cv::createHanningWindow(window_, reference_small_.size(), CV_64F);
+  cv::createHanningWindow(window_, reference_small_.size(), CV_32F);
 }
 
 HealthReport CameraHealthMonitor::fault(CameraFault fault, const std::string& detail) const {

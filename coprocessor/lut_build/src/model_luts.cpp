@@ -38,12 +38,12 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
   hash.add_u64(grid.fingerprint());
   hash.add_u32(kTableCutVersion);
   hash.add_u32(CellEnvelope::kMethodVersion);
-  hash.add_double(options.ball_radius_m);
+  hash.add_double(ball_radius_of(cell, options));
   hash.add_double(options.padding_m);
   // Whole cells hash as before sub-cells existed, so that their tables stay valid.
   if (cell.envelope_subdivision > 1) hash.add_u32(cell.envelope_subdivision);
   const RobotModel& robot = *cell.robot;
-  for (const RobotPart& part : robot_parts(robot, options.parts)) {
+  for (const RobotPart& part : robot_parts(robot, voting_parts(cell, options))) {
     hash.add_u64(part.first_body);
     hash.add_u64(part.end_body);
   }
@@ -55,7 +55,7 @@ std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& gri
     hash.add_u32(static_cast<std::uint32_t>(joint.type));
   }
   // The robot's geometry enters through its ball cover, which is a function of every shape.
-  const RobotBalls balls = cover_with_balls(robot, options.ball_radius_m);
+  const RobotBalls balls = cover_with_balls(robot, ball_radius_of(cell, options));
   add_balls(hash, balls.base);
   for (const auto& link : balls.links) add_balls(hash, link);
   hash.add_u32(static_cast<std::uint32_t>(cell.feature_grid.columns()));

@@ -60,7 +60,8 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
   set.cameras = invert_cell_tables(cell, grid, 1, std::move(cell_tables), true, threads, progress);
   ModelLutOptions model_options;
   model_options.threads = threads;
-  const ModelSilhouettes model(cell, grid, model_options);
+  // Only its envelope (of whole cells) is used: no sub-cells drawn.
+  const ModelSilhouettes model(cell, grid, model_options, CellDrawing::kWholeCells);
   set.static_cells =
       static_obstacle_cells(model.envelope(), cell.obstacles, threads, stage_progress(progress, 2));
   return set;

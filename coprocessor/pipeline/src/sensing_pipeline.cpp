@@ -20,8 +20,8 @@ std::optional<ConfigurationSilhouettes> silhouettes_at_configuration(
   const auto widening =
       removal_widening_m(*cell.robot, grid, settings.padding_m, settings.sync_error_s);
   if (!widening) return std::nullopt;
-  return std::optional<ConfigurationSilhouettes>(std::in_place, cell,
-                                                 ModelLutOptions{}.ball_radius_m, *widening);
+  return std::optional<ConfigurationSilhouettes>(std::in_place, cell, cell.ball_radius_m,
+                                                 *widening);
 }
 
 // The protective separation check the cell file asks for; none when it turns it off, the cell
@@ -34,7 +34,7 @@ std::optional<ProtectiveSeparation> separation_check(const CellModel& cell, cons
       removal_widening_m(*cell.robot, grid, settings.padding_m, settings.sync_error_s);
   if (!widening) return std::nullopt;
   return std::optional<ProtectiveSeparation>(
-      std::in_place, cell, luts.parts, ModelLutOptions{}.ball_radius_m, *widening,
+      std::in_place, cell, luts.parts, cell.ball_radius_m, *widening,
       separation_levels(*cell.config.protective_separation, cell.config.protective_reduced_speeds),
       settings.camera_threshold);
 }

@@ -34,11 +34,11 @@ CellEnvelope checked_envelope(const CellModel& cell, const CspaceGrid& grid,
                               const ModelLutOptions& options) {
   check_model_lut_options(cell, options);
   std::vector<std::size_t> part_starts;
-  for (const RobotPart& part : robot_parts(*cell.robot, options.parts)) {
+  for (const RobotPart& part : robot_parts(*cell.robot, voting_parts(cell, options))) {
     part_starts.push_back(part.first_body);
   }
-  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, options.ball_radius_m), grid,
-                      options.padding_m, part_starts);
+  return CellEnvelope(*cell.robot, cover_with_balls(*cell.robot, ball_radius_of(cell, options)),
+                      grid, options.padding_m, part_starts);
 }
 
 // The grid of the sub-cells the silhouettes are drawn from.
@@ -61,15 +61,15 @@ void check_model_lut_options(const CellModel& cell, const ModelLutOptions& optio
   if (cell.cameras.empty()) {
     throw std::invalid_argument("cell '" + cell.config.name + "' has no camera");
   }
-  if (!std::isfinite(options.ball_radius_m) || options.ball_radius_m < 0.005 ||
-      options.ball_radius_m > 0.5) {
+  const double ball_radius_m = ball_radius_of(cell, options);
+  if (!(ball_radius_m >= kMinBallRadius_m && ball_radius_m <= kMaxBallRadius_m)) {
     throw std::invalid_argument("ball radius must be 0.005..0.5 m, got " +
-                                std::to_string(options.ball_radius_m));
+                                std::to_string(ball_radius_m));
   }
   if (!std::isfinite(options.padding_m) || options.padding_m < 0.0 || options.padding_m > 1.0) {
     throw std::invalid_argument("padding must be 0..1 m, got " + std::to_string(options.padding_m));
   }
-  const auto split = static_cast<std::uint32_t>(options.parts);
+  const auto split = static_cast<std::uint32_t>(voting_parts(cell, options));
   if (split < static_cast<std::uint32_t>(PartSplit::kWholeRobot) ||
       split > static_cast<std::uint32_t>(PartSplit::kArmSegments)) {
     throw std::invalid_argument("unknown robot part split " + std::to_string(split));
@@ -89,7 +89,7 @@ ModelSilhouettes::ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid
       if (grid.joint(joint).discretised) discretised_joints_.push_back(joint);
     }
   }
-  parts_ = robot_parts(*cell.robot, options.parts);
+  parts_ = robot_parts(*cell.robot, voting_parts(cell, options));
   projections_.reserve(cell.cameras.size());
   for (const auto& camera : cell.cameras) projections_.emplace_back(camera, cell.feature_grid);
   instance_ = next_instance.fetch_add(1);

@@ -170,6 +170,14 @@ struct CellConfig {
   // cells.
   std::optional<double> envelope_max_move_m;
   SourceLine envelope_max_move_at;
+  // The size of the balls that cover the robot's surface in the tables, robot removal and the
+  // protective separation (robot_balls.hpp), metres. Unset: kDefaultBallRadius_m (cell_model.hpp).
+  std::optional<double> ball_radius_m;
+  SourceLine ball_radius_at;
+  // The robot parts the cameras vote on (robot_parts.hpp): "per-link", "arm-segments" or
+  // "whole-robot" (the paper's vote). Unset: arm segments.
+  std::optional<std::string> robot_parts;
+  SourceLine robot_parts_at;
   // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`
   // (the default) makes every C-space cell whose envelope reaches into one a static obstacle
   // cell; `allow` leaves them, with a warning whenever the tables are loaded.

@@ -12,12 +12,19 @@
 #include "safecell/features/blocked_mask.hpp"
 #include "safecell/robot/lever_arms.hpp"
 #include "safecell/robot/robot_model.hpp"
+#include "safecell/robot/robot_parts.hpp"
 
 namespace safecell {
 
 // Sub-cells per joint: more would multiply the table build's work by more than 4^d (256 with the
 // default cell's 4 discretised joints).
 inline constexpr std::uint32_t kMaxEnvelopeSubdivision = 4;
+
+// The balls' size of a cell file that does not say (ball_radius_m), and the sizes it may say:
+// smaller balls take a quarter of their size as the sampling step over every surface.
+inline constexpr double kDefaultBallRadius_m = 0.06;
+inline constexpr double kMinBallRadius_m = 0.005;
+inline constexpr double kMaxBallRadius_m = 0.5;
 
 struct CellModel {
   CellConfig config;  // complete: every joint has range_deg and l_m
@@ -34,12 +41,17 @@ struct CellModel {
   std::uint32_t envelope_subdivision = 1;
   FeatureWeights feature_weights = kDefaultFeatureWeights;
   int blocked_threshold = kDefaultBlockedThreshold;
+  // The robot parts the cameras vote on, settled from robot_parts: the model-mode tables hold
+  // one LUT-2 per part and camera.
+  PartSplit robot_parts = PartSplit::kArmSegments;
+  // The size of the balls covering the robot, settled from ball_radius_m.
+  double ball_radius_m = kDefaultBallRadius_m;
 };
 
 // Throws CellError naming the file, line and field: an unreadable robot, joints that do not match
 // the robot's, a range outside the arm's limits, l_m given for a robot (it is computed), or range
 // or l_m missing without one; unusable cameras, feature grid, obstacles, cell size, camera
-// threshold, occlusion reach or envelope max-move.
+// threshold, occlusion reach, envelope max-move, ball radius or robot parts.
 CellModel load_cell_model(CellConfig config);
 
 }  // namespace safecell

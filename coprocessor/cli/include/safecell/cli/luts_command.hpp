@@ -8,9 +8,9 @@
 namespace safecell {
 
 struct LutsBuildOptions {
-  std::string cell_path;  // empty: the built-in default cell
-  std::string out_dir;    // empty: the cache folder
-  double ball_radius_m = 0.06;
+  std::string cell_path;       // empty: the built-in default cell
+  std::string out_dir;         // empty: the cache folder
+  double ball_radius_m = 0.0;  // size of the balls covering the robot; 0: the cell's
   double padding_m = 0.02;
   unsigned threads = 0;
   bool force = false;  // build even when the folder holds the tables already

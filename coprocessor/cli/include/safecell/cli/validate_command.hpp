@@ -22,11 +22,11 @@ struct ValidateOptions {
   std::string negative_control = "none";
   // The tables and fusion under test (ablations); unset: the cell's and the defaults.
   double padding_m = 0.02;
-  double ball_radius_m = 0.06;
-  std::string robot_parts = "arm-segments";  // the parts the cameras vote on (robot_parts.hpp)
-  bool hidden_votes = false;                 // the robot's blocked pixels vote as hidden
-  int occlusion_reach = -1;          // feature cells a blob grows into the robot; < 0: the cell's
-  double m_max_m = 0.0;              // 0: the cell's
+  double ball_radius_m = 0.0;  // size of the balls covering the robot; 0: the cell's
+  std::string robot_parts;     // the parts the cameras vote on (robot_parts.hpp); empty: the cell's
+  bool hidden_votes = false;   // the robot's blocked pixels vote as hidden
+  int occlusion_reach = -1;    // feature cells a blob grows into the robot; < 0: the cell's
+  double m_max_m = 0.0;        // 0: the cell's
   double envelope_max_move_m = 0.0;  // sub-cells' max-move of the envelope; 0: the cell's
   int camera_threshold = 0;          // 0: the cell's
   // Model error applied to the simulated world (model_error.hpp); --model-error sets the

@@ -24,9 +24,10 @@ struct RobotPart {
 };
 
 enum class PartSplit : std::uint32_t {
-  kWholeRobot = 1,   // one part: the vote of the paper
-  kPerLink = 2,      // the base and every link on its own
-  kArmSegments = 3,  // the base | the links of joints 1-2 | the rest (the default)
+  kWholeRobot = 1,  // one part: the vote of the paper
+  kPerLink = 2,     // the base and every link on its own
+  kArmSegments =
+      3,  // the base | the links of joints 1-2 | the rest (a cell file that does not say)
 };
 
 const char* to_string(PartSplit split);

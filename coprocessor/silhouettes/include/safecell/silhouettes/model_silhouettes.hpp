@@ -35,11 +35,21 @@
 namespace safecell {
 
 struct ModelLutOptions {
-  double ball_radius_m = 0.06;                // size of the balls that cover the robot's surface
-  double padding_m = 0.02;                    // added all round, for calibration and model error
-  unsigned threads = 0;                       // 0: one per hardware thread (table builds only)
-  PartSplit parts = PartSplit::kArmSegments;  // the parts the cameras vote on
+  // Size of the balls that cover the robot's surface; unset: the cell's (CellModel::ball_radius_m).
+  std::optional<double> ball_radius_m;
+  double padding_m = 0.02;  // added all round, for calibration and model error
+  unsigned threads = 0;     // 0: one per hardware thread (table builds only)
+  // The parts the cameras vote on; unset: the cell's (CellModel::robot_parts).
+  std::optional<PartSplit> parts;
 };
+
+// The parts the tables of `cell` built with `options` vote on, and the size of their balls.
+[[nodiscard]] inline PartSplit voting_parts(const CellModel& cell, const ModelLutOptions& options) {
+  return options.parts.value_or(cell.robot_parts);
+}
+[[nodiscard]] inline double ball_radius_of(const CellModel& cell, const ModelLutOptions& options) {
+  return options.ball_radius_m.value_or(cell.ball_radius_m);
+}
 
 // How a cell's silhouette is drawn: as the tables are (the cell file's sub-cells), or from the
 // whole cell's envelope (wider; both hold the robot at every configuration of the cell).
