@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "safecell/cell/cell_error.hpp"
@@ -337,6 +338,17 @@ CameraConfig camera_of(const Field& field, const std::filesystem::path& base_dir
   return camera;
 }
 
+// A top-level field the cell may leave out: `value` read by `read` (number_of, integer_of,
+// text_of) and `at` its line when it is there, both untouched otherwise.
+template <typename T, typename Read>
+void read_optional(const Field& top, const char* key, Read read, std::optional<T>& value,
+                   SourceLine& at) {
+  if (!top.node[key]) return;
+  const Field field = require(top, key);
+  value = read(field);
+  at = field.at;
+}
+
 }  // namespace
 
 CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
@@ -412,31 +424,14 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
       cell.blocked_cells.threshold = integer_of(require(blocked, "threshold"));
     }
   }
-  if (root["camera_threshold"]) {
-    const Field threshold = require(top, "camera_threshold");
-    cell.camera_threshold = integer_of(threshold);
-    cell.camera_threshold_at = threshold.at;
-  }
-  if (root["occlusion_reach_cells"]) {
-    const Field reach = require(top, "occlusion_reach_cells");
-    cell.occlusion_reach_cells = integer_of(reach);
-    cell.occlusion_reach_at = reach.at;
-  }
-  if (root["envelope_max_move_m"]) {
-    const Field max_move = require(top, "envelope_max_move_m");
-    cell.envelope_max_move_m = number_of(max_move);
-    cell.envelope_max_move_at = max_move.at;
-  }
-  if (root["ball_radius_m"]) {
-    const Field radius = require(top, "ball_radius_m");
-    cell.ball_radius_m = number_of(radius);
-    cell.ball_radius_at = radius.at;
-  }
-  if (root["robot_parts"]) {
-    const Field parts = require(top, "robot_parts");
-    cell.robot_parts = text_of(parts);
-    cell.robot_parts_at = parts.at;
-  }
+  read_optional(top, "camera_threshold", integer_of, cell.camera_threshold,
+                cell.camera_threshold_at);
+  read_optional(top, "occlusion_reach_cells", integer_of, cell.occlusion_reach_cells,
+                cell.occlusion_reach_at);
+  read_optional(top, "envelope_max_move_m", number_of, cell.envelope_max_move_m,
+                cell.envelope_max_move_at);
+  read_optional(top, "ball_radius_m", number_of, cell.ball_radius_m, cell.ball_radius_at);
+  read_optional(top, "robot_parts", text_of, cell.robot_parts, cell.robot_parts_at);
   if (root["blind_spots"]) {
     const Field blind_spots = require(top, "blind_spots");
     const std::string value = text_of(blind_spots);
