@@ -60,7 +60,9 @@ run ablation-hidden-votes --scenes "$small" --hidden-votes on
 run ablation-hidden-votes-threshold-2 --scenes "$small" --hidden-votes on --camera-threshold 2
 run ablation-parts-whole-robot --scenes "$small" --robot-parts whole-robot
 run ablation-parts-per-link --scenes "$small" --robot-parts per-link
+run ablation-parts-per-link-balls-0.04 --scenes "$small" --robot-parts per-link --ball-radius 0.04
 run per-link-main --scenes "$scenes" --robot-parts per-link
+run per-link-balls-4cm-main --scenes "$scenes" --robot-parts per-link --ball-radius 0.04
 run ablation-parts-whole-robot-threshold-2 --scenes "$small" --robot-parts whole-robot \
   --camera-threshold 2
 # Before (threshold 2, the default until 2026-12-06) and why the reach is 4: the main run's
