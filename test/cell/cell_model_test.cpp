@@ -176,6 +176,7 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
   EXPECT_EQ(parts("per-link"), PartSplit::kPerLink);
   EXPECT_EQ(parts("arm-segments"), PartSplit::kArmSegments);
   EXPECT_EQ(parts("whole-robot"), PartSplit::kWholeRobot);
+  EXPECT_EQ(parts("links-and-wrist"), PartSplit::kLinksAndWrist);
   EXPECT_EQ(load_cell_model(parse_cell_yaml(std::string(kBuiltinCell), "c.yaml")).ball_radius_m,
             kDefaultBallRadius_m);
   EXPECT_EQ(load_cell_model(
@@ -183,13 +184,13 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
                 .ball_radius_m,
             0.04);
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "ball_radius_m: 0.001\n"),
-            "cell.yaml:11: ball_radius_m: value 0.001000, expected 0.005000 to 0.500000 m");
+            "cell.yaml:11: ball_radius_m: value 0.001000, expected 0.005 to 0.5 m");
   EXPECT_NE(model_error_of(std::string(kBuiltinCell) + "ball_radius_m: .nan\n")
-                .find("expected 0.005000 to 0.500000 m"),
+                .find("expected 0.005 to 0.5 m"),
             std::string::npos);
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) + "robot_parts: per-joint\n"),
-            "cell.yaml:11: robot_parts: value 'per-joint', expected per-link, arm-segments or "
-            "whole-robot");
+            "cell.yaml:11: robot_parts: value 'per-joint', expected per-link, links-and-wrist, "
+            "arm-segments or whole-robot");
   EXPECT_EQ(model_error_of(std::string(kBuiltinCell) +
                            "obstacles:\n  - {name: t, size_m: [1, -1, 1], centre_m: [0, 0, 0]}\n"),
             "cell.yaml:12: obstacles[0].size_m: value -1.000000, expected edge lengths above 0 m");

@@ -23,8 +23,8 @@ void expect_partition(const RobotModel& robot, const std::vector<RobotPart>& par
 
 TEST(RobotParts, EverySplitCoversEveryBodyOnce) {
   const RobotModel robot = default_robot();
-  for (const PartSplit split :
-       {PartSplit::kWholeRobot, PartSplit::kPerLink, PartSplit::kArmSegments}) {
+  for (const PartSplit split : {PartSplit::kWholeRobot, PartSplit::kPerLink,
+                                PartSplit::kArmSegments, PartSplit::kLinksAndWrist}) {
     SCOPED_TRACE(to_string(split));
     expect_partition(robot, robot_parts(robot, split));
   }
@@ -34,6 +34,16 @@ TEST(RobotParts, EverySplitCoversEveryBodyOnce) {
   ASSERT_EQ(segments.size(), 3U);
   EXPECT_EQ(segments[1].first_body, 1U);
   EXPECT_EQ(segments[1].end_body, 3U);
+  // Links 1-3 on their own, the wrist's three links as one part.
+  const auto links_and_wrist = robot_parts(robot, PartSplit::kLinksAndWrist);
+  ASSERT_EQ(links_and_wrist.size(), 5U);
+  for (std::size_t body = 0; body < 4; ++body) {
+    EXPECT_EQ(links_and_wrist[body].first_body, body);
+    EXPECT_EQ(links_and_wrist[body].end_body, body + 1);
+  }
+  EXPECT_EQ(links_and_wrist[4].first_body, 4U);
+  EXPECT_EQ(links_and_wrist[4].end_body, 7U);
+  EXPECT_EQ(links_and_wrist[4].name, "wrist (links 4-6)");
 }
 
 TEST(RobotParts, ShortArmsAreCutPerLink) {
@@ -43,11 +53,19 @@ TEST(RobotParts, ShortArmsAreCutPerLink) {
   const auto parts = robot_parts(robot, PartSplit::kArmSegments);
   expect_partition(robot, parts);
   EXPECT_EQ(parts.size(), 3U);
+  // A wrist of one link is that link.
+  robot = default_robot();
+  robot.joints.resize(4);
+  robot.links.resize(4);
+  const auto four = robot_parts(robot, PartSplit::kLinksAndWrist);
+  expect_partition(robot, four);
+  EXPECT_EQ(four.size(), 5U);
+  EXPECT_EQ(four.back().first_body, 4U);
 }
 
 TEST(RobotParts, NamesReadBackAndUnknownNamesAreRefused) {
-  for (const PartSplit split :
-       {PartSplit::kWholeRobot, PartSplit::kPerLink, PartSplit::kArmSegments}) {
+  for (const PartSplit split : {PartSplit::kWholeRobot, PartSplit::kPerLink,
+                                PartSplit::kArmSegments, PartSplit::kLinksAndWrist}) {
     PartSplit read = PartSplit::kWholeRobot;
     ASSERT_TRUE(parse_part_split(to_string(split), read));
     EXPECT_EQ(read, split);
@@ -55,6 +73,7 @@ TEST(RobotParts, NamesReadBackAndUnknownNamesAreRefused) {
   PartSplit untouched = PartSplit::kPerLink;
   EXPECT_FALSE(parse_part_split("per-joint", untouched));
   EXPECT_EQ(untouched, PartSplit::kPerLink);
+  EXPECT_EQ(part_split_names(), "per-link, links-and-wrist, arm-segments or whole-robot");
 }
 
 TEST(RobotParts, ThePartsShapesAreTheRobotsShapes) {

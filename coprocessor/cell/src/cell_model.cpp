@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "safecell/cell/cell_error.hpp"
@@ -131,19 +132,16 @@ void settle_balls_and_parts(CellModel& model) {
   const CellConfig& cell = model.config;
   if (cell.ball_radius_m) {
     const double radius = *cell.ball_radius_m;
-    if (!(radius >= kMinBallRadius_m && radius <= kMaxBallRadius_m)) {
+    if (!is_ball_radius(radius)) {
       throw_cell_error(cell.ball_radius_at, "ball_radius_m",
-                       "value " + std::to_string(radius) + ", expected " +
-                           std::to_string(kMinBallRadius_m) + " to " +
-                           std::to_string(kMaxBallRadius_m) + " m");
+                       "value " + std::to_string(radius) + ", expected " + ball_radius_range());
     }
     model.ball_radius_m = radius;
   }
   if (!cell.robot_parts) return;
   if (!parse_part_split(*cell.robot_parts, model.robot_parts)) {
-    throw_cell_error(
-        cell.robot_parts_at, "robot_parts",
-        "value '" + *cell.robot_parts + "', expected per-link, arm-segments or whole-robot");
+    throw_cell_error(cell.robot_parts_at, "robot_parts",
+                     "value '" + *cell.robot_parts + "', expected " + part_split_names());
   }
 }
 
@@ -196,6 +194,12 @@ void settle_joints_without_robot(const CellConfig& cell) {
 }
 
 }  // namespace
+
+std::string ball_radius_range() {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g to %g m", kMinBallRadius_m, kMaxBallRadius_m);
+  return text;
+}
 
 CellModel load_cell_model(CellConfig config) {
   CellModel model{std::move(config),

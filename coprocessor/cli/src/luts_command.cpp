@@ -298,7 +298,7 @@ void add_luts_build_and_info_commands(CLI::App& luts, CommandLine& line) {
   build_command
       ->add_option("--ball-radius", build->ball_radius_m,
                    "Size of the balls covering the robot, metres (default: the cell's)")
-      ->check(CLI::Range(0.005, 0.5));
+      ->check(CLI::Range(kMinBallRadius_m, kMaxBallRadius_m));
   build_command
       ->add_option("--padding", build->padding_m,
                    "Margin added all round the robot, metres (calibration error)")

@@ -68,7 +68,7 @@ void refuse_options_of_the_other_loop(const CLI::App& validate, bool closed_loop
 void check_robot_parts(const std::string& text) {
   PartSplit split = PartSplit::kArmSegments;
   if (!text.empty() && !parse_part_split(text, split)) {
-    bad_option("--robot-parts", text, "per-link, arm-segments or whole-robot");
+    bad_option("--robot-parts", text, part_split_names());
   }
 }
 
@@ -322,11 +322,13 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
   validate_command
       ->add_option("--ball-radius", validate->ball_radius_m,
                    "Size of the balls covering the robot, metres (default: the cell's)")
-      ->check(CLI::Range(0.005, 0.5));
+      ->check(CLI::Range(kMinBallRadius_m, kMaxBallRadius_m));
   validate_command->add_option(
       "--robot-parts", validate->robot_parts,
-      "The robot parts the cameras vote on: per-link, arm-segments (base | links "
-      "1-2 | the rest) or whole-robot (the paper's vote) (default: the cell's)");
+      "The robot parts the cameras vote on: per-link, links-and-wrist (base | link 1 | link 2 | "
+      "link 3 | the wrist, links 4 on), arm-segments (base | links 1-2 | the rest) or whole-robot "
+      "(the "
+      "paper's vote) (default: the cell's)");
   validate_command
       ->add_option("--hidden-votes", validate->hidden_votes,
                    "Whether a camera whose view of a cell the robot hides votes for it where "

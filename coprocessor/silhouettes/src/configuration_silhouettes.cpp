@@ -34,8 +34,8 @@ ConfigurationSilhouettes::ConfigurationSilhouettes(const CellModel& cell, double
   }
   if (cell.cameras.empty())
     throw std::invalid_argument("cell '" + cell.config.name + "' has no camera");
-  if (!(ball_radius_m >= 0.005 && ball_radius_m <= 0.5)) {
-    throw std::invalid_argument("ball radius must be 0.005..0.5 m, got " +
+  if (!is_ball_radius(ball_radius_m)) {
+    throw std::invalid_argument("ball radius must be " + ball_radius_range() + ", got " +
                                 std::to_string(ball_radius_m));
   }
   if (!(widening_m >= 0.0 && widening_m <= 1.0)) {

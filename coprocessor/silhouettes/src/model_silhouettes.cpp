@@ -62,8 +62,8 @@ void check_model_lut_options(const CellModel& cell, const ModelLutOptions& optio
     throw std::invalid_argument("cell '" + cell.config.name + "' has no camera");
   }
   const double ball_radius_m = ball_radius_of(cell, options);
-  if (!(ball_radius_m >= kMinBallRadius_m && ball_radius_m <= kMaxBallRadius_m)) {
-    throw std::invalid_argument("ball radius must be 0.005..0.5 m, got " +
+  if (!is_ball_radius(ball_radius_m)) {
+    throw std::invalid_argument("ball radius must be " + ball_radius_range() + ", got " +
                                 std::to_string(ball_radius_m));
   }
   if (!std::isfinite(options.padding_m) || options.padding_m < 0.0 || options.padding_m > 1.0) {

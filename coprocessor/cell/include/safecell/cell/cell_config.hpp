@@ -174,8 +174,8 @@ struct CellConfig {
   // protective separation (robot_balls.hpp), metres. Unset: kDefaultBallRadius_m (cell_model.hpp).
   std::optional<double> ball_radius_m;
   SourceLine ball_radius_at;
-  // The robot parts the cameras vote on (robot_parts.hpp): "per-link", "arm-segments" or
-  // "whole-robot" (the paper's vote). Unset: arm segments.
+  // The robot parts the cameras vote on (robot_parts.hpp): "per-link", "links-and-wrist",
+  // "arm-segments" or "whole-robot" (the paper's vote). Unset: arm segments.
   std::optional<std::string> robot_parts;
   SourceLine robot_parts_at;
   // Blind spots (floor positions too few cameras see a person at, floor_coverage.hpp): `forbid`

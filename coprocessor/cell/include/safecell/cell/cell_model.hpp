@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "safecell/camera/feature_grid.hpp"
 #include "safecell/camera/pinhole_camera.hpp"
@@ -25,6 +26,12 @@ inline constexpr std::uint32_t kMaxEnvelopeSubdivision = 4;
 inline constexpr double kDefaultBallRadius_m = 0.06;
 inline constexpr double kMinBallRadius_m = 0.005;
 inline constexpr double kMaxBallRadius_m = 0.5;
+// Whether radius_m lies within those sizes (false for NaN).
+[[nodiscard]] constexpr bool is_ball_radius(double radius_m) {
+  return radius_m >= kMinBallRadius_m && radius_m <= kMaxBallRadius_m;
+}
+// Those sizes for messages: "0.005 to 0.5 m".
+[[nodiscard]] std::string ball_radius_range();
 
 struct CellModel {
   CellConfig config;  // complete: every joint has range_deg and l_m

@@ -28,14 +28,20 @@ enum class PartSplit : std::uint32_t {
   kPerLink = 2,     // the base and every link on its own
   kArmSegments =
       3,  // the base | the links of joints 1-2 | the rest (a cell file that does not say)
+  // The base and links 1-3 each on its own, the wrist (links 4 to the last) as one part: the
+  // vote per link where it splits the arm, at a fraction of its tables (the wrist's links are
+  // small and overlap, and their union's sets are far more compact than each one's).
+  kLinksAndWrist = 4,
 };
 
 const char* to_string(PartSplit split);
-// Reads "whole-robot", "per-link" or "arm-segments" into `split`; false for anything else.
+// Reads a name of to_string() into `split`; false for anything else.
 bool parse_part_split(const std::string& text, PartSplit& split);
+// The names parse_part_split() reads, for messages: "per-link, links-and-wrist, ... or ...".
+[[nodiscard]] std::string part_split_names();
 
-// The parts of `robot` for `split`. Arm segments need at least 3 joints; with fewer the robot is
-// cut per link.
+// The parts of `robot` for `split`. Arm segments need at least 3 joints and links and wrist at
+// least 5; with fewer the robot is cut per link.
 [[nodiscard]] std::vector<RobotPart> robot_parts(const RobotModel& robot, PartSplit split);
 
 }  // namespace safecell

@@ -31,7 +31,7 @@ namespace safecell {
 class ConfigurationSilhouettes {
  public:
   // Throws std::invalid_argument when the cell has no robot model or no camera, or for a ball
-  // radius outside 0.005..0.5 m or a widening outside 0..1 m.
+  // radius outside kMinBallRadius_m..kMaxBallRadius_m or a widening outside 0..1 m.
   ConfigurationSilhouettes(const CellModel& cell, double ball_radius_m, double widening_m);
 
   [[nodiscard]] std::size_t camera_count() const { return projections_.size(); }

@@ -61,7 +61,7 @@ enum class CellDrawing {
 class ModelSilhouettes final : public RobotSilhouettes {
  public:
   // Throws std::invalid_argument when the cell has no robot model or no camera, or for options
-  // outside ball radius 0.005..0.5 m, padding 0..1 m.
+  // outside ball radius kMinBallRadius_m..kMaxBallRadius_m, padding 0..1 m.
   ModelSilhouettes(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
                    CellDrawing drawing = CellDrawing::kAsTheTables);
 
