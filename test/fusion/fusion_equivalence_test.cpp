@@ -189,6 +189,10 @@ TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForEveryLink) {
   expect_fusions_agree(PartSplit::kPerLink);
 }
 
+TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForLinksAndWrist) {
+  expect_fusions_agree(PartSplit::kLinksAndWrist);
+}
+
 TEST(FusionEquivalence, FastEqualsBaselineEqualsDenseOracleForTheWholeRobot) {
   expect_fusions_agree(PartSplit::kWholeRobot);
 }

@@ -106,7 +106,8 @@ TEST_F(ModelLuts, EnvelopeFromTailTablesHoldsTheRobotAnywhereInTheCell) {
 
 TEST_F(ModelLuts, EachPartsEnvelopeHoldsItsBodies) {
   // Heads from the base joint on, so that the tail tables are cut where the parts begin.
-  for (const PartSplit split : {PartSplit::kPerLink, PartSplit::kArmSegments}) {
+  for (const PartSplit split :
+       {PartSplit::kPerLink, PartSplit::kArmSegments, PartSplit::kLinksAndWrist}) {
     std::vector<std::size_t> starts;
     const std::vector<RobotPart> parts = robot_parts(*cell_->robot, split);
     for (const RobotPart& part : parts) starts.push_back(part.first_body);
@@ -129,7 +130,8 @@ TEST_F(ModelLuts, PartSilhouettesHoldTheRenderedPartAndUniteToTheRobot) {
   SimulatedCell sim = simulate_cell(*cell_, SensorSettings{});
   const FeatureGrid& features = cell_->feature_grid;
   const std::size_t cameras = cell_->cameras.size();
-  for (const PartSplit split : {PartSplit::kPerLink, PartSplit::kArmSegments}) {
+  for (const PartSplit split :
+       {PartSplit::kPerLink, PartSplit::kArmSegments, PartSplit::kLinksAndWrist}) {
     const ModelSilhouettes silhouettes(*cell_, *grid_, test::options_with(split));
     const std::vector<RobotPart>& parts = silhouettes.parts();
     test::PropertyRun run(10);

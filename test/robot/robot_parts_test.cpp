@@ -73,6 +73,9 @@ TEST(RobotParts, NamesReadBackAndUnknownNamesAreRefused) {
   PartSplit untouched = PartSplit::kPerLink;
   EXPECT_FALSE(parse_part_split("per-joint", untouched));
   EXPECT_EQ(untouched, PartSplit::kPerLink);
+  EXPECT_TRUE(is_part_split(PartSplit::kLinksAndWrist));
+  EXPECT_FALSE(is_part_split(static_cast<PartSplit>(0)));
+  EXPECT_FALSE(is_part_split(static_cast<PartSplit>(5)));
   EXPECT_EQ(part_split_names(), "per-link, links-and-wrist, arm-segments or whole-robot");
 }
 

@@ -1,5 +1,6 @@
 #include "safecell/robot/robot_parts.hpp"
 
+#include <algorithm>
 #include <iterator>
 
 namespace safecell {
@@ -40,6 +41,10 @@ bool parse_part_split(const std::string& text, PartSplit& split) {
     }
   }
   return false;
+}
+
+bool is_part_split(PartSplit split) {
+  return std::find(std::begin(kSplits), std::end(kSplits), split) != std::end(kSplits);
 }
 
 std::string part_split_names() {

@@ -69,10 +69,10 @@ void check_model_lut_options(const CellModel& cell, const ModelLutOptions& optio
   if (!std::isfinite(options.padding_m) || options.padding_m < 0.0 || options.padding_m > 1.0) {
     throw std::invalid_argument("padding must be 0..1 m, got " + std::to_string(options.padding_m));
   }
-  const auto split = static_cast<std::uint32_t>(voting_parts(cell, options));
-  if (split < static_cast<std::uint32_t>(PartSplit::kWholeRobot) ||
-      split > static_cast<std::uint32_t>(PartSplit::kArmSegments)) {
-    throw std::invalid_argument("unknown robot part split " + std::to_string(split));
+  const PartSplit split = voting_parts(cell, options);
+  if (!is_part_split(split)) {
+    throw std::invalid_argument("unknown robot part split " +
+                                std::to_string(static_cast<std::uint32_t>(split)));
   }
 }
 

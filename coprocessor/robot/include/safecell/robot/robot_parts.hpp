@@ -37,6 +37,8 @@ enum class PartSplit : std::uint32_t {
 const char* to_string(PartSplit split);
 // Reads a name of to_string() into `split`; false for anything else.
 bool parse_part_split(const std::string& text, PartSplit& split);
+// Whether `split` is one of the splits above (a value cast from a number may be none).
+[[nodiscard]] bool is_part_split(PartSplit split);
 // The names parse_part_split() reads, for messages: "per-link, links-and-wrist, ... or ...".
 [[nodiscard]] std::string part_split_names();
 
