@@ -63,6 +63,11 @@ run ablation-parts-per-link --scenes "$small" --robot-parts per-link
 run ablation-parts-per-link-balls-0.04 --scenes "$small" --robot-parts per-link --ball-radius 0.04
 run per-link-main --scenes "$scenes" --robot-parts per-link
 run per-link-balls-4cm-main --scenes "$scenes" --robot-parts per-link --ball-radius 0.04
+run ablation-parts-links-and-wrist --scenes "$small" --robot-parts links-and-wrist
+run ablation-parts-links-and-wrist-balls-0.04-sub-cells-3 --scenes "$small" \
+  --robot-parts links-and-wrist --ball-radius 0.04 --envelope-max-move 0.06
+run links-and-wrist-main --scenes "$scenes" --robot-parts links-and-wrist --ball-radius 0.04 \
+  --envelope-max-move 0.06
 run ablation-parts-whole-robot-threshold-2 --scenes "$small" --robot-parts whole-robot \
   --camera-threshold 2
 # Before (threshold 2, the default until 2026-12-06) and why the reach is 4: the main run's
