@@ -249,6 +249,26 @@ TEST_F(ModelLuts, PixelTableIsTheExactInverseOfTheCellTable) {
   }
 }
 
+// Cell c of the repeated table has the rectangles of cell c mod the table's cells, in order.
+// Control: the table repeated once is itself, and a count past 2^32 - 1 cells is refused.
+TEST(RepeatCells, EachCellHasTheRectanglesOfItsCellInTheFirstPeriod) {
+  const CellToPixelsTable table(
+      8, 8, {0, 2, 2, 3},
+      {FeatureRect{0, 0, 1, 1}, FeatureRect{3, 3, 3, 4}, FeatureRect{7, 7, 7, 7}});
+  const CellToPixelsTable repeated = repeat_cells(table, 4);
+  ASSERT_EQ(repeated.cell_count(), 12u);
+  for (CellIndex cell = 0; cell < repeated.cell_count(); ++cell) {
+    const auto got = repeated.rects_of(cell);
+    const auto want = table.rects_of(cell % 3);
+    ASSERT_TRUE(std::equal(got.begin(), got.end(), want.begin(), want.end())) << "cell " << cell;
+  }
+  const CellToPixelsTable once = repeat_cells(table, 1);
+  EXPECT_TRUE(std::equal(once.offsets().begin(), once.offsets().end(), table.offsets().begin(),
+                         table.offsets().end()));
+  EXPECT_THROW((void)repeat_cells(table, 1U << 31), std::invalid_argument);
+  EXPECT_EQ(repeat_cells(table, 0).cell_count(), 0u);
+}
+
 TEST_F(ModelLuts, CellTableDoesNotDependOnTheThreadCount) {
   const auto one = cell_tables(1);
   const auto two = cell_tables(2);

@@ -127,13 +127,18 @@ TEST(ModelSilhouettes, EnvelopeMaxMoveSetsTheSubCellsPerJoint) {
 }
 
 // A cell's silhouette is the union of its sub-cells' own (whole cells of the subdivided grid),
-// for random parts of random cells asked in random order (the lines a thread keeps).
+// for random parts of random cells asked in random order (the lines a thread keeps). A part is
+// drawn from the sub-cells of the joints that move it only (model_silhouettes.cpp); the union
+// here is over all 8. Control: the first sub-cell alone differs from the union for most parts
+// that a discretised joint moves.
 TEST(ModelSilhouettes, ACellsSilhouetteIsTheUnionOfItsSubCells) {
   const SubCellModels models;
   ASSERT_EQ(models.sub_cells.subdivision(), 2u);
   ASSERT_EQ(models.sub_grid.cell_count(), models.grid.cell_count() * 8);
   test::PropertyRun run(40);
   const std::size_t cameras = models.cell.cameras.size();
+  int moved = 0;
+  int first_alone_differs = 0;
   for (int i = 0; i < run.iterations(); ++i) {
     const auto index = static_cast<CellIndex>(run.rng()() % models.grid.cell_count());
     const std::size_t part = run.rng()() % models.sub_cells.parts().size();
@@ -145,6 +150,64 @@ TEST(ModelSilhouettes, ACellsSilhouetteIsTheUnionOfItsSubCells) {
     for (const CellIndex sub : subs)
       models.on_sub_grid.add_part_silhouettes(sub, part, united.data());
     ASSERT_EQ(masks, united) << "cell " << index << ", part " << part;
+    if (models.sub_cells.parts()[part].end_body > 1) {  // joint 0 (discretised) moves it
+      std::vector<FeatureMask> first(cameras, FeatureMask(models.cell.feature_grid));
+      models.on_sub_grid.add_part_silhouettes(subs.front(), part, first.data());
+      ++moved;
+      first_alone_differs += first != united ? 1 : 0;
+    }
+  }
+  if (run.full_length()) {
+    EXPECT_GT(first_alone_differs, moved / 2) << "control: one sub-cell for all must be caught";
+  }
+}
+
+// The silhouettes of a part are the same in cells that differ only along joints that do not
+// move it (body b moves with joints 0..b-1): the model-mode build draws each part's first joints'
+// cells only and repeats them (repeat_cells). Every part of links-and-wrist, with sub-cells.
+// Control: a cell that differs along the last joint that moves the part has other silhouettes
+// in most calls.
+TEST(ModelSilhouettes, APartsSilhouettesRepeatAlongTheJointsThatDoNotMoveIt) {
+  const SubCellModels models;
+  const ModelSilhouettes silhouettes(models.cell, models.grid,
+                                     test::options_with(PartSplit::kLinksAndWrist));
+  ASSERT_EQ(silhouettes.parts().size(), 5u);
+  const CspaceGrid& grid = models.grid;
+  test::PropertyRun run(60);
+  const std::size_t cameras = models.cell.cameras.size();
+  int controls = 0;
+  int control_caught = 0;
+  for (int i = 0; i < run.iterations(); ++i) {
+    const auto index = static_cast<CellIndex>(run.rng()() % grid.cell_count());
+    const std::size_t part = run.rng()() % silhouettes.parts().size();
+    const std::size_t moving_joints = silhouettes.parts()[part].end_body - 1;
+    const GridCoords coords = grid.coords_of(index).value();
+    GridCoords elsewhere = coords;
+    for (std::uint32_t joint = 0; joint < grid.joint_count(); ++joint) {
+      if (joint >= moving_joints) {
+        elsewhere.along[joint] = static_cast<std::uint32_t>(run.rng()() % grid.cells_along(joint));
+      }
+    }
+    const CellIndex other = grid.index_of(elsewhere).value();
+    std::vector<FeatureMask> masks(cameras, FeatureMask(models.cell.feature_grid));
+    std::vector<FeatureMask> others(cameras, FeatureMask(models.cell.feature_grid));
+    silhouettes.add_part_silhouettes(index, part, masks.data());
+    silhouettes.add_part_silhouettes(other, part, others.data());
+    ASSERT_EQ(masks, others) << "part " << silhouettes.parts()[part].name << ", cells " << index
+                             << " and " << other;
+    if (moving_joints == 0) continue;
+    const auto last =
+        static_cast<std::uint32_t>(std::min<std::size_t>(moving_joints, grid.joint_count()) - 1);
+    if (grid.cells_along(last) < 2) continue;
+    GridCoords moved = coords;
+    moved.along[last] = (coords.along[last] + 1) % grid.cells_along(last);
+    std::vector<FeatureMask> moved_masks(cameras, FeatureMask(models.cell.feature_grid));
+    silhouettes.add_part_silhouettes(grid.index_of(moved).value(), part, moved_masks.data());
+    ++controls;
+    control_caught += moved_masks != masks ? 1 : 0;
+  }
+  if (run.full_length()) {
+    EXPECT_GT(control_caught, controls / 2) << "control: a moving joint's cell must count";
   }
 }
 

@@ -1,5 +1,9 @@
 #include "safecell/lut_build/cell_table_builder.hpp"
 
+#include <limits>
+#include <stdexcept>
+#include <string>
+
 namespace safecell {
 namespace {
 
@@ -57,6 +61,30 @@ std::vector<CellToPixelsTable> build_cell_to_pixels_tables(const CellTableBuild&
     tables.emplace_back(build.columns, build.rows, std::move(offsets), std::move(rects));
   }
   return tables;
+}
+
+CellToPixelsTable repeat_cells(const CellToPixelsTable& table, std::uint32_t times) {
+  const std::uint64_t cells = std::uint64_t{table.cell_count()} * times;
+  if (cells > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("LUT-1 of " + std::to_string(table.cell_count()) +
+                                " cells repeated " + std::to_string(times) +
+                                " times has more than 2^32 - 1 cells");
+  }
+  const std::span<const std::uint64_t> offsets = table.offsets();
+  const std::span<const FeatureRect> rects = table.rects();
+  std::vector<std::uint64_t> repeated_offsets;
+  repeated_offsets.reserve(static_cast<std::size_t>(cells) + 1);
+  repeated_offsets.push_back(0);
+  std::vector<FeatureRect> repeated_rects;
+  repeated_rects.reserve(rects.size() * times);
+  for (std::uint32_t copy = 0; copy < times; ++copy) {
+    const std::uint64_t base = repeated_rects.size();
+    for (std::size_t cell = 1; cell < offsets.size(); ++cell) {
+      repeated_offsets.push_back(base + offsets[cell]);
+    }
+    repeated_rects.insert(repeated_rects.end(), rects.begin(), rects.end());
+  }
+  return {table.columns(), table.rows(), std::move(repeated_offsets), std::move(repeated_rects)};
 }
 
 }  // namespace safecell

@@ -12,12 +12,12 @@ ProgressCallback stage_progress(const StagedProgress& progress, int stage) {
   return [&progress, stage](double fraction) { progress(stage, fraction); };
 }
 
-std::vector<CellToPixelsTable> build_cell_tables(const CellModel& cell, const CspaceGrid& grid,
+std::vector<CellToPixelsTable> build_cell_tables(const CellModel& cell, std::uint32_t cell_count,
                                                  std::size_t part_count,
                                                  const CellSilhouettes& silhouettes,
                                                  unsigned threads, const StagedProgress& progress) {
   CellTableBuild build;
-  build.cell_count = grid.cell_count();
+  build.cell_count = cell_count;
   build.table_count = part_count * cell.cameras.size();
   build.columns = cell.feature_grid.columns();
   build.rows = cell.feature_grid.rows();

@@ -3,6 +3,7 @@
 #include "safecell/base/fnv1a.hpp"
 #include "safecell/envelope/cell_envelope.hpp"
 #include "safecell/envelope/static_obstacle_cells.hpp"
+#include "safecell/lut_build/cell_table_builder.hpp"
 
 namespace safecell {
 namespace {
@@ -27,6 +28,18 @@ void add_balls(Fnv1a64& hash, const std::vector<Ball>& balls) {
     hash.add_double(ball.centre_m.z());
     hash.add_double(ball.radius_m);
   }
+}
+
+// The cells of the grid's first joints that move the part (body b moves with joints 0..b-1):
+// cells that differ only in the other joints' cells have the same silhouettes of it (the
+// envelope of a body is swept by its own joints only), so LUT-1 of the first `leading_cells`
+// cells, repeated, is the part's LUT-1 (repeat_cells). A divisor of the grid's cell count.
+std::uint32_t leading_cells(const CspaceGrid& grid, const RobotPart& part) {
+  std::uint32_t cells = 1;
+  for (std::uint32_t joint = 0; joint + 1 < part.end_body && joint < grid.joint_count(); ++joint) {
+    cells *= grid.cells_along(joint);
+  }
+  return cells;
 }
 
 }  // namespace
@@ -109,12 +122,16 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
       if (progress)
         progress(stage, (static_cast<double>(part) + fraction) / static_cast<double>(parts));
     };
+    const std::uint32_t leading = leading_cells(grid, silhouettes.parts()[part]);
     std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
-        cell, grid, 1,
+        cell, leading, 1,
         [&silhouettes, part](CellIndex cell_index, std::vector<FeatureMask>& masks) {
           silhouettes.add_part_silhouettes(cell_index, part, masks.data());
         },
         options.threads, part_progress);
+    for (CellToPixelsTable& table : cell_tables) {
+      table = repeat_cells(table, grid.cell_count() / leading);
+    }
     std::vector<CameraLuts> part_luts = invert_cell_tables(cell, grid, 1, std::move(cell_tables),
                                                            false, options.threads, part_progress);
     for (std::size_t camera = 0; camera < part_luts.size(); ++camera) {

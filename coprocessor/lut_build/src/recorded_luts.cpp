@@ -42,7 +42,7 @@ LutSet build_recorded_luts(const CellModel& cell, const CspaceGrid& grid,
   if (!recording.recorded()) throw std::invalid_argument("recorded tables need a recording");
   check_recording_bounded(recording);
   std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
-      cell, grid, 1,
+      cell, grid.cell_count(), 1,
       [&recording](CellIndex cell_index, std::vector<FeatureMask>& masks) {
         for (std::size_t camera = 0; camera < masks.size(); ++camera) {
           recording.add_silhouette(cell_index, camera, masks[camera]);

@@ -141,14 +141,27 @@ void ModelSilhouettes::add_bodies(CellIndex cell, BodyRange bodies, std::size_t 
     add_sub_cell_bodies(coords.value(), bodies, first_camera, end_camera, masks);
     return;
   }
+  // Body b moves with joints 0..b-1 only: the sub-cells of a later joint draw these bodies the
+  // same, so they are cut along the joints that move them, and along the others the first
+  // sub-cell stands for all (the same balls to the bit: the envelope's sweeps of a body are by
+  // its own joints).
+  const std::size_t end_body = std::min(bodies.end, drawn().body_count());
+  std::size_t cut_joints = 0;
+  while (cut_joints < discretised_joints_.size() &&
+         discretised_joints_[cut_joints] + 1 < end_body) {
+    ++cut_joints;
+  }
   std::size_t sub_cells = 1;
-  for (std::size_t joint = 0; joint < discretised_joints_.size(); ++joint)
-    sub_cells *= subdivision_;
+  for (std::size_t joint = 0; joint < cut_joints; ++joint) sub_cells *= subdivision_;
   GridCoords sub_cell = coords.value();
+  for (const std::uint32_t joint : discretised_joints_) {
+    sub_cell.along[joint] = coords.value().along[joint] * subdivision_;
+  }
   // Joint 0 fastest, so that neighbouring sub-cells share a line (tail_balls).
   for (std::size_t index = 0; index < sub_cells; ++index) {
     std::size_t rest = index;
-    for (const std::uint32_t joint : discretised_joints_) {
+    for (std::size_t cut = 0; cut < cut_joints; ++cut) {
+      const std::uint32_t joint = discretised_joints_[cut];
       sub_cell.along[joint] = coords.value().along[joint] * subdivision_ +
                               static_cast<std::uint32_t>(rest % subdivision_);
       rest /= subdivision_;

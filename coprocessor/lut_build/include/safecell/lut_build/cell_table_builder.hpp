@@ -30,4 +30,11 @@ struct CellTableBuild {
     const CellTableBuild& build, const CellSilhouettes& silhouettes,
     const ProgressCallback& progress = {});
 
+// LUT-1 of table.cell_count() * times cells, cell c with the rectangles of cell
+// c % table.cell_count(). For a robot part that only the first joints move: with joint 0 the
+// fastest in a cell's index, the cells that differ only in the other joints' cells follow each
+// other at that period, and their silhouettes of the part are the same. Throws
+// std::invalid_argument when the result would have more than 2^32 - 1 cells.
+[[nodiscard]] CellToPixelsTable repeat_cells(const CellToPixelsTable& table, std::uint32_t times);
+
 }  // namespace safecell

@@ -20,10 +20,11 @@ using StagedProgress = std::function<void(int stage, double fraction_done)>;
 // The callback of one stage (empty when `progress` is).
 [[nodiscard]] ProgressCallback stage_progress(const StagedProgress& progress, int stage);
 
-// LUT-1 of every robot part in every camera of the cell (stage 0), part-major: table
+// LUT-1 of every robot part in every camera of the cell (stage 0) for C-space cells
+// 0..cell_count-1 (the grid's cell_count(), or fewer: repeat_cells), part-major: table
 // part * cameras + camera.
 [[nodiscard]] std::vector<CellToPixelsTable> build_cell_tables(
-    const CellModel& cell, const CspaceGrid& grid, std::size_t part_count,
+    const CellModel& cell, std::uint32_t cell_count, std::size_t part_count,
     const CellSilhouettes& silhouettes, unsigned threads, const StagedProgress& progress);
 
 // The set's cameras: LUT-2 of each part from its LUT-1 (stage 1), the tables as
