@@ -326,9 +326,8 @@ void add_validate_command(CLI::App& app, CommandLine& line) {
   validate_command->add_option(
       "--robot-parts", validate->robot_parts,
       "The robot parts the cameras vote on: per-link, links-and-wrist (base | link 1 | link 2 | "
-      "link 3 | the wrist, links 4 on), arm-segments (base | links 1-2 | the rest) or whole-robot "
-      "(the "
-      "paper's vote) (default: the cell's)");
+      "link 3 | the wrist, links 4 on), arm-segments (base | links 1-2 | the rest) or "
+      "whole-robot (the paper's vote) (default: the cell's)");
   validate_command
       ->add_option("--hidden-votes", validate->hidden_votes,
                    "Whether a camera whose view of a cell the robot hides votes for it where "
