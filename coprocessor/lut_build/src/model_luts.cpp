@@ -30,18 +30,6 @@ void add_balls(Fnv1a64& hash, const std::vector<Ball>& balls) {
   }
 }
 
-// The cells of the grid's first joints that move the part (body b moves with joints 0..b-1):
-// cells that differ only in the other joints' cells have the same silhouettes of it (the
-// envelope of a body is swept by its own joints only), so LUT-1 of the first `leading_cells`
-// cells, repeated, is the part's LUT-1 (repeat_cells). A divisor of the grid's cell count.
-std::uint32_t leading_cells(const CspaceGrid& grid, const RobotPart& part) {
-  std::uint32_t cells = 1;
-  for (std::uint32_t joint = 0; joint + 1 < part.end_body && joint < grid.joint_count(); ++joint) {
-    cells *= grid.cells_along(joint);
-  }
-  return cells;
-}
-
 }  // namespace
 
 std::uint64_t model_lut_fingerprint(const CellModel& cell, const CspaceGrid& grid,
@@ -122,7 +110,12 @@ LutSet build_model_luts(const CellModel& cell, const CspaceGrid& grid,
       if (progress)
         progress(stage, (static_cast<double>(part) + fraction) / static_cast<double>(parts));
     };
-    const std::uint32_t leading = leading_cells(grid, silhouettes.parts()[part]);
+    // Body b moves with joints 0..b-1 only (its envelope is swept by its own joints), so cells
+    // that differ only in later joints' cells have the same silhouettes of the part: LUT-1 of the
+    // first cells, one per combination of the joints that move its last body (that body's
+    // prefixes), repeated (repeat_cells; joint 0 is the fastest in a cell's index).
+    const auto leading = static_cast<std::uint32_t>(
+        silhouettes.envelope().prefix_count(silhouettes.parts()[part].end_body - 1));
     std::vector<CellToPixelsTable> cell_tables = build_cell_tables(
         cell, leading, 1,
         [&silhouettes, part](CellIndex cell_index, std::vector<FeatureMask>& masks) {
