@@ -21,12 +21,19 @@ struct LineBalls {
   std::size_t first_body = 0;
   std::size_t end_body = 0;
   std::vector<Ball> balls;
+  std::vector<BallGroup> groups;  // of `balls`, when the cells are drawn in sub-cells
 };
 
 // A thread's lines: the build asks for one robot part at a time, and a cell's sub-cells lie on
 // s^(d-1) lines (8 for s = 2 and 4 discretised joints); a caller that alternates parts finds each
 // part's lines here too.
 constexpr std::size_t kLinesPerThread = 32;
+
+// Balls per group (ball_groups.hpp) where a cell is drawn as the union of its sub-cells. The
+// sub-cells overlap: in the tables of 4 cm balls and 3 sub-cells per joint, 99.8 % of the balls'
+// rectangles lie wholly in what earlier sub-cells drew, and 68 % of the groups of 8 (4 and 16:
+// 84 and 49 %); the build of those tables took 106 s drawing every ball, 70 s with groups of 8.
+constexpr std::size_t kBallsPerGroup = 8;
 
 // The envelope of the cell's robot, after the checks (so that no argument touches a missing
 // robot before they ran).
@@ -176,23 +183,27 @@ void ModelSilhouettes::add_sub_cell_bodies(const GridCoords& sub_cell, BodyRange
   const CellEnvelope& envelope = drawn();
   const std::size_t end_body = std::min(bodies.end, envelope.body_count());
   const std::size_t end_cached = std::min(end_body, cached_bodies_);
-  const std::vector<Ball>& balls =
-      tail_balls(sub_cell, std::max(bodies.first, cached_bodies_), end_body);
+  const LineTail tail = tail_balls(sub_cell, std::max(bodies.first, cached_bodies_), end_body);
   for (std::size_t camera = first_camera; camera < end_camera; ++camera) {
     FeatureMask& mask = masks[camera - first_camera];
     for (std::size_t body = bodies.first; body < end_cached; ++body) {
       mask |= cached_[body][envelope.prefix_of(sub_cell, body)][camera];
     }
-    add_ball_rects(projections_[camera], balls, mask);
+    if (subdivision_ > 1) {
+      add_grouped_ball_rects(projections_[camera], *tail.balls, *tail.groups, mask);
+    } else {
+      add_ball_rects(projections_[camera], *tail.balls, mask);
+    }
   }
 }
 
-const std::vector<Ball>& ModelSilhouettes::tail_balls(const GridCoords& coords,
-                                                      std::size_t first_body,
-                                                      std::size_t end_body) const {
+ModelSilhouettes::LineTail ModelSilhouettes::tail_balls(const GridCoords& coords,
+                                                        std::size_t first_body,
+                                                        std::size_t end_body) const {
   thread_local std::array<LineBalls, kLinesPerThread> lines;
   thread_local std::size_t next_replaced = 0;
   thread_local std::vector<Ball> moved;
+  thread_local std::vector<BallGroup> moved_groups;
   GridCoords line_start = coords;
   line_start.along[0] = 0;
   const CellEnvelope& envelope = drawn();
@@ -206,6 +217,8 @@ const std::vector<Ball>& ModelSilhouettes::tail_balls(const GridCoords& coords,
     found = lines.begin() + static_cast<std::ptrdiff_t>(next_replaced);
     next_replaced = (next_replaced + 1) % kLinesPerThread;
     envelope.balls_of_bodies(line_start, first_body, end_body, found->balls);
+    found->groups.clear();
+    if (subdivision_ > 1) group_balls(found->balls, kBallsPerGroup, found->groups);
     found->instance = instance_;
     found->line_start = start;
     found->first_body = first_body;
@@ -216,7 +229,13 @@ const std::vector<Ball>& ModelSilhouettes::tail_balls(const GridCoords& coords,
   for (const Ball& ball : found->balls) {
     moved.push_back(CellEnvelope::moved_ball(motion, ball));
   }
-  return moved;
+  // A bound moved as its balls are still holds them (the motion is rigid; moved_ball grows both
+  // by the same margin).
+  moved_groups.clear();
+  for (const BallGroup& group : found->groups) {
+    moved_groups.push_back({CellEnvelope::moved_ball(motion, group.bound), group.first, group.end});
+  }
+  return {&moved, &moved_groups};
 }
 
 }  // namespace safecell

@@ -29,6 +29,10 @@ class BallProjection {
   // several balls at a time. Throws std::invalid_argument when the spans differ in size.
   void feature_rects(std::span<const Ball> balls_in_cell,
                      std::span<std::optional<FeatureRect>> rects) const;
+  // Whether a ball inside another has its rectangle inside the other's (or none): true without
+  // lens distortion, where the rectangles are exact. With distortion the box's edges are sampled,
+  // and the nesting holds only up to the sampling.
+  [[nodiscard]] bool rectangles_nest() const { return !distorted_; }
 
  private:
   struct PixelBox {

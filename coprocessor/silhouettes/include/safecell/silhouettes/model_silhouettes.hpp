@@ -19,6 +19,9 @@
 // cell lies in one sub-cell), by balls that follow its path. envelope() stays the whole cell's.
 // Per-cycle robot removal draws whole cells (CellDrawing::kWholeCells): 16 sub-cells cost about
 // four times the cycle's fusion, and removal needs only a silhouette that holds the robot.
+// The sub-cells overlap, so most of a sub-cell's balls land where earlier ones drew: with
+// sub-cells the balls are drawn in groups (ball_groups.hpp), a group skipped whole when the mask
+// holds its bound's rectangle already. The same silhouettes to the bit.
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -26,6 +29,7 @@
 #include <vector>
 
 #include "safecell/cell/cell_model.hpp"
+#include "safecell/envelope/ball_groups.hpp"
 #include "safecell/envelope/ball_projection.hpp"
 #include "safecell/envelope/cell_envelope.hpp"
 #include "safecell/robot/kinematics.hpp"
@@ -97,10 +101,14 @@ class ModelSilhouettes final : public RobotSilhouettes {
   // those of its line's first cell (joint 0 at its first cell), made once per line and thread,
   // moved along the line (CellEnvelope::first_joint_motions). The builds go through the cells in
   // order, so most cells find their lines' balls made (a cell's sub-cells lie on s^(d-1) lines, a
-  // thread keeps kLinesPerThread). The reference is the calling thread's, valid until its next
+  // thread keeps kLinesPerThread). The vectors are the calling thread's, valid until its next
   // call.
-  const std::vector<Ball>& tail_balls(const GridCoords& coords, std::size_t first_body,
-                                      std::size_t end_body) const;
+  // With sub-cells, the balls come in groups (ball_groups.hpp), made with the line's balls.
+  struct LineTail {
+    const std::vector<Ball>* balls;
+    const std::vector<BallGroup>* groups;  // empty without sub-cells
+  };
+  LineTail tail_balls(const GridCoords& coords, std::size_t first_body, std::size_t end_body) const;
 
   std::vector<RobotPart> parts_;
   CspaceGrid grid_;

@@ -1,0 +1,102 @@
+#include "safecell/envelope/ball_groups.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace safecell {
+namespace {
+
+// Bits 0, 3, 6, ... of the result are those of x (x < 2^10).
+std::uint32_t spread_bits(std::uint32_t x) {
+  x = (x | (x << 16U)) & 0x030000FFU;
+  x = (x | (x << 8U)) & 0x0300F00FU;
+  x = (x | (x << 4U)) & 0x030C30C3U;
+  x = (x | (x << 2U)) & 0x09249249U;
+  return x;
+}
+
+// The smallest ball around the middle of the balls' centres that holds them all, plus the margin.
+Ball bound_of(std::span<const Ball> balls) {
+  Eigen::Vector3d low = balls.front().centre_m;
+  Eigen::Vector3d high = low;
+  for (const Ball& ball : balls) {
+    low = low.cwiseMin(ball.centre_m);
+    high = high.cwiseMax(ball.centre_m);
+  }
+  const Eigen::Vector3d middle = 0.5 * (low + high);
+  double radius_m = 0.0;
+  for (const Ball& ball : balls) {
+    radius_m = std::max(radius_m, (ball.centre_m - middle).norm() + ball.radius_m);
+  }
+  return Ball{middle, radius_m + BallGroup::kBoundMargin_m};
+}
+
+}  // namespace
+
+void group_balls(std::vector<Ball>& balls, std::size_t group_size, std::vector<BallGroup>& groups) {
+  if (group_size == 0) throw std::invalid_argument("balls grouped by 0");
+  groups.clear();
+  if (balls.empty()) return;
+  Eigen::Vector3d low = balls.front().centre_m;
+  Eigen::Vector3d high = low;
+  for (const Ball& ball : balls) {
+    low = low.cwiseMin(ball.centre_m);
+    high = high.cwiseMax(ball.centre_m);
+  }
+  // 1024 steps along the longest side of the centres' box.
+  const double extent = (high - low).maxCoeff();
+  const double steps_per_m = extent > 0.0 ? 1023.0 / extent : 0.0;
+  const auto z_order = [&](const Ball& ball) {
+    std::uint32_t code = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto step =
+          static_cast<std::uint32_t>(std::lround((ball.centre_m[axis] - low[axis]) * steps_per_m));
+      code |= spread_bits(std::min<std::uint32_t>(step, 1023U)) << static_cast<unsigned>(axis);
+    }
+    return code;
+  };
+  std::stable_sort(balls.begin(), balls.end(),
+                   [&](const Ball& a, const Ball& b) { return z_order(a) < z_order(b); });
+  for (std::size_t first = 0; first < balls.size(); first += group_size) {
+    const std::size_t end = std::min(balls.size(), first + group_size);
+    groups.push_back(BallGroup{bound_of(std::span<const Ball>(balls).subspan(first, end - first)),
+                               static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(end)});
+  }
+}
+
+void add_grouped_ball_rects(const BallProjection& projection, std::span<const Ball> balls,
+                            std::span<const BallGroup> groups, FeatureMask& mask) {
+  if (!projection.rectangles_nest()) {
+    add_ball_rects(projection, balls, mask);
+    return;
+  }
+  // The bounds of a chunk of groups are projected together, and the balls of the groups the mask
+  // does not hold yet are drawn together: both project several balls at a time.
+  constexpr std::size_t kChunk = 32;
+  thread_local std::vector<Ball> bounds;
+  thread_local std::vector<Ball> drawn;
+  std::optional<FeatureRect> rects[kChunk];
+  for (std::size_t first = 0; first < groups.size(); first += kChunk) {
+    const std::size_t count = std::min(kChunk, groups.size() - first);
+    bounds.clear();
+    for (std::size_t i = 0; i < count; ++i) bounds.push_back(groups[first + i].bound);
+    projection.feature_rects(bounds, {rects, count});
+    drawn.clear();
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!rects[i] || mask.all_in_rect(*rects[i])) continue;
+      const BallGroup& group = groups[first + i];
+      if (group.first > group.end || group.end > balls.size()) {
+        throw std::invalid_argument("a ball group past the " + std::to_string(balls.size()) +
+                                    " balls");
+      }
+      drawn.insert(drawn.end(), balls.begin() + group.first, balls.begin() + group.end);
+    }
+    add_ball_rects(projection, drawn, mask);
+  }
+}
+
+}  // namespace safecell
