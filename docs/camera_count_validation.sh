@@ -19,7 +19,7 @@ validation_setup docs/validation/cameras safecell-cameras
 cameras_cell() {
   local file=$1 height=$2
   shift 2
-  cp coprocessor/cell/default_cell.yaml "$file.tmp"
+  cp "$base_cell" "$file.tmp"
   local last='    look_at: {position_m: \[1.95, -1.95, 2.9\], .*'
   grep -qx "$last" "$file.tmp" || { echo "the default cell's cam3 is not where expected" >&2; exit 1; }
   local spec lines=""
@@ -63,8 +63,8 @@ run closed-loop-8-cameras-threshold-5 validate --closed-loop --cell "$out/cell-8
 # The two scenes again with the four corner cameras at threshold 3: the same scenes (the same
 # colliding configurations), and the misses of the main run's threshold-3 report.
 for shard in 8024 9710; do
-  run "validate-4-cameras-threshold-3-scene-$shard" validate --scenes 10000 --seed 11 \
-    --shard "$shard/10000" --camera-threshold 3 --lut-cache "$cache"
+  run "validate-4-cameras-threshold-3-scene-$shard" validate --cell "$base_cell" --scenes 10000 \
+    --seed 11 --shard "$shard/10000" --camera-threshold 3 --lut-cache "$cache"
 done
 # The eight cameras' fusion at threshold 5 against the default cell's, the same frames (bench
 # --cell), twice.
@@ -72,5 +72,5 @@ sed 's/^camera_threshold: 2$/camera_threshold: 5/' "$out/cell-8-cameras.yaml" \
   > "$out/cell-8-cameras-threshold-5.yaml"
 for i in 1 2; do
   run "bench-8-cameras-threshold-5-$i" bench --cell "$out/cell-8-cameras-threshold-5.yaml" \
-    --frames 300 --lut-cache "$cache"
+    --baseline-cell "$base_cell" --frames 300 --lut-cache "$cache"
 done

@@ -11,7 +11,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/validation_run.sh"
 validation_setup docs/validation/fine-grid safecell-fine-grid
 
 cell="$out/cell.yaml"
-sed 's/^m_max_m: 0.18$/m_max_m: 0.06/' coprocessor/cell/default_cell.yaml > "$cell.tmp"
+sed 's/^m_max_m: 0.18$/m_max_m: 0.06/' "$base_cell" > "$cell.tmp"
 grep -q '^m_max_m: 0.06$' "$cell.tmp" || { echo "the default cell's m_max_m line has changed" >&2; exit 1; }
 mv "$cell.tmp" "$cell"
 
@@ -22,11 +22,12 @@ mv "$cell.tmp" "$cell"
 mv "$out/build.json.tmp" "$out/build.json"
 printf 'build\tsafecell luts build --cell %s --out CACHE --force --verify-cells 2000\t0\n' \
   "$cell" >> "$out/commands.tsv"
-run bench bench --cell "$cell" --lut-cache "$cache" --frames 300
+run bench bench --cell "$cell" --baseline-cell "$base_cell" --lut-cache "$cache" --frames 300
 for threshold in 2 3; do
   run "validate-seed7-threshold-$threshold" validate --cell "$cell" --scenes 200 --seed 7 \
     --camera-threshold "$threshold" --lut-cache "$cache"
-  run "default-validate-seed7-threshold-$threshold" validate --scenes 200 --seed 7 \
+  run "default-validate-seed7-threshold-$threshold" validate --cell "$base_cell" --scenes 200 \
+    --seed 7 \
     --camera-threshold "$threshold" --lut-cache "$cache"
 done
 run validate-seed11 validate --cell "$cell" --scenes 2000 --seed 11 --lut-cache "$cache"

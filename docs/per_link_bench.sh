@@ -12,11 +12,13 @@ validation_setup docs/validation/per-link safecell-per-link
 per_link="$out/cell-per-link.yaml"
 default_cell_with "$per_link" "robot_parts: per-link" "ball_radius_m: 0.04"
 run build-per-link luts build --cell "$per_link" --out "$cache" --force
-run build luts build --out "$cache" --force
-run bench-cell bench --cell "$per_link" --lut-cache "$cache" --frames 300
+run build luts build --cell "$base_cell" --out "$cache" --force
+run bench-cell bench --cell "$per_link" --baseline-cell "$base_cell" --lut-cache "$cache" \
+  --frames 300
 
 links_and_wrist="$out/cell-links-and-wrist.yaml"
 default_cell_with "$links_and_wrist" "robot_parts: links-and-wrist" "ball_radius_m: 0.04" \
   "envelope_max_move_m: 0.06"
 run build-links-and-wrist luts build --cell "$links_and_wrist" --out "$cache" --force
-run bench-cell-links-and-wrist bench --cell "$links_and_wrist" --lut-cache "$cache" --frames 300
+run bench-cell-links-and-wrist bench --cell "$links_and_wrist" --baseline-cell "$base_cell" \
+  --lut-cache "$cache" --frames 300

@@ -1,4 +1,9 @@
 # Sourced by the docs/*_validation.sh scripts (not run on its own): the shared set-up and `run`.
+# The sections these scripts write were measured on the default cell until 2026-12-07 (arm
+# segments on balls of 6 cm, 2 sub-cells per joint): they derive their cells from it, and pass it
+# (`--cell "$base_cell"`, `--baseline-cell "$base_cell"`) where they ran the default cell.
+base_cell=docs/validation/cell-arm-segments.yaml
+
 # validation_setup OUT CACHE_PREFIX: strict mode, the repository root as working folder, `safecell`
 # (SAFECELL or the host build), `out` (created, its commands.tsv emptied) and a temporary table
 # cache `cache`, removed on exit.
@@ -29,12 +34,12 @@ run() {
     >> "$out/commands.tsv"
 }
 
-# default_cell_with FILE LINE...: the default cell with each top-level LINE ("key: value") in place
+# default_cell_with FILE LINE...: the base cell (above) with each top-level LINE ("key: value") in place
 # of the line of its key, into FILE (atomically); stops when a key's line is not there.
 default_cell_with() {
   local file=$1
   shift
-  cp coprocessor/cell/default_cell.yaml "$file.tmp"
+  cp "$base_cell" "$file.tmp"
   local line
   for line in "$@"; do
     sed -i "s/^${line%%:*}: .*\$/$line/" "$file.tmp"

@@ -83,7 +83,9 @@ TEST(CellModel, TheDefaultCellHasFourCornerCamerasAndAWorkbench) {
   ASSERT_EQ(model.obstacles.size(), 1u);
   EXPECT_EQ(model.camera_threshold, 3);
   EXPECT_EQ(model.occlusion_reach_cells, 4);
-  EXPECT_EQ(model.envelope_subdivision, 2u);  // 0.09 m of 0.18 (docs/validation.md, "Sub-cells")
+  EXPECT_EQ(model.envelope_subdivision, 3u);  // 0.06 m of 0.18 (docs/validation.md, "Sub-cells")
+  EXPECT_EQ(model.robot_parts, PartSplit::kLinksAndWrist);
+  EXPECT_EQ(model.ball_radius_m, 0.04);
   ASSERT_TRUE(model.config.protective_separation.has_value());
   EXPECT_NEAR(separation_distance_m(*model.config.protective_separation), 0.64, 1e-12);
   EXPECT_EQ(model.feature_weights.average, 2);

@@ -23,7 +23,7 @@ inline std::filesystem::path write_coarse_cell(const std::filesystem::path& fold
   replace("m_max_m: 0.18", "m_max_m: 0.4");
   replace("range_deg: [-240, 240]\n    discretised: true",
           "range_deg: [-240, 240]\n    discretised: false");
-  replace("envelope_max_move_m: 0.09", "envelope_max_move_m: 0.4");  // whole cells: fast tables
+  replace("envelope_max_move_m: 0.06", "envelope_max_move_m: 0.4");  // whole cells: fast tables
   const std::filesystem::path path = folder / "coarse.yaml";
   std::ofstream(path) << yaml;
   return path;

@@ -44,8 +44,8 @@ TEST(ValidateCommand, ReportsTheIssuesKeysAndMissesNothing) {
   EXPECT_EQ(report["camera_threshold"].get<int>(), 3);
   EXPECT_EQ(report["occlusion_reach"].get<int>(), 4);
   EXPECT_EQ(report["envelope_subdivision"].get<int>(), 1) << "the coarse cell draws whole cells";
-  EXPECT_EQ(report["robot_parts"].get<std::string>(), "arm-segments");
-  EXPECT_EQ(report["ball_radius_m"].get<double>(), 0.06);
+  EXPECT_EQ(report["robot_parts"].get<std::string>(), "links-and-wrist");
+  EXPECT_EQ(report["ball_radius_m"].get<double>(), 0.04);
 }
 
 // The cell file's robot parts and balls are the tables' and the report's; the options override.
@@ -58,8 +58,8 @@ TEST(ValidateCommand, TheCellsRobotPartsAndBallsAreTheRunsUnlessTheOptionsSay) {
     yaml.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"robot_parts: arm-segments", "robot_parts: per-link"},
-        {"ball_radius_m: 0.06", "ball_radius_m: 0.05"}}) {
+       {std::pair<std::string, std::string>{"robot_parts: links-and-wrist", "robot_parts: per-link"},
+        {"ball_radius_m: 0.04", "ball_radius_m: 0.05"}}) {
     const auto at = yaml.find(from);
     ASSERT_NE(at, std::string::npos) << from;
     yaml.replace(at, from.size(), to);

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The default cell since 2026-12-07 (the cameras voting on links 1-3 and the wrist, balls of 4 cm,
+# 3 sub-cells per joint) against the one before it (docs/validation/cell-arm-segments.yaml): its
+# table build, its fusion on the demo's frames beside the arm segments' (`bench --cell`), and
+# three runs of the demo. Reports in docs/validation/links-and-wrist/, which
+# docs/validation_tables.py reads ("The default cell votes on links and wrist"); the validation
+# runs on the same scenes are docs/validation.sh's. About 8 minutes on 2 cores. The demo runs in
+# real time: run nothing else beside it.
+source "$(dirname "${BASH_SOURCE[0]}")/validation_run.sh"
+validation_setup docs/validation/links-and-wrist safecell-links-and-wrist
+
+run build luts build --out "$cache" --force
+run bench-cell bench --cell coprocessor/cell/default_cell.yaml --baseline-cell "$base_cell" \
+  --lut-cache "$cache" --frames 300
+for i in 1 2 3; do
+  start=$SECONDS
+  echo "== demo-$i: safecell demo --out $cache/demo-$i --lut-cache CACHE" >&2
+  "$safecell" demo --out "$cache/demo-$i" --lut-cache "$cache" >&2
+  cp "$cache/demo-$i/summary.json" "$out/demo-$i.json.tmp"
+  mv "$out/demo-$i.json.tmp" "$out/demo-$i.json"
+  printf 'demo-%s\tsafecell demo --out OUT --lut-cache CACHE (summary.json)\t%s\n' "$i" \
+    "$((SECONDS - start))" >> "$out/commands.tsv"
+done
