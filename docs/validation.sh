@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates docs/validation.md: runs `safecell validate` on the default cell (the 10,000-scene
-# run, the negative controls and the model-error runs) and on the default cell until 2026-12-07
+# run, the negative controls and the model-error runs) and on the default cell before commit 853d384
 # (docs/validation/cell-arm-segments.yaml: the ablations and the sections written on it), keeps
 # every JSON report in docs/validation/, and writes the tables from them. Takes about two hours
 # on 2 cores. Needs a host build (cmake --preset host && cmake --build --preset host) and python3.
@@ -43,7 +43,7 @@ for control in empty-masks dropped-strip envelope-removal; do
 done
 run links-and-wrist-model-error --scenes "$small" --model-error
 run links-and-wrist-model-error-rotation-5deg --scenes "$small" --camera-rotation-error 5
-# The rest on the default cell until 2026-12-07: arm segments on balls of 6 cm, 2 sub-cells.
+# The rest on the default cell before commit 853d384: arm segments on balls of 6 cm, 2 sub-cells.
 segments="docs/validation/cell-arm-segments.yaml"
 run arm-segments-main --cell "$segments" --scenes "$scenes"
 for control in empty-masks dropped-strip envelope-removal; do
@@ -64,34 +64,39 @@ run ablation-ball-0.09 --cell "$segments" --scenes "$small" --ball-radius 0.09
 # Whole cells on the finer grid: its sub-cells would make 17 million of them to draw.
 run ablation-m-max-0.12 --cell "$segments" --scenes "$small" --m-max 0.12 --envelope-max-move 0.12
 run ablation-whole-cells --cell "$segments" --scenes "$small" --envelope-max-move 0.18
-run ablation-threshold-2 --cell "$segments" --scenes "$small" --camera-threshold 2 --occlusion-reach 3
+run ablation-threshold-2 --cell "$segments" --scenes "$small" --camera-threshold 2 \
+  --occlusion-reach 3
 run ablation-reach-3 --cell "$segments" --scenes "$small" --occlusion-reach 3
 run ablation-reach-5 --cell "$segments" --scenes "$small" --occlusion-reach 5
 run ablation-hidden-votes --cell "$segments" --scenes "$small" --hidden-votes on
-run ablation-hidden-votes-threshold-2 --cell "$segments" --scenes "$small" --hidden-votes on --camera-threshold 2
+run ablation-hidden-votes-threshold-2 --cell "$segments" --scenes "$small" --hidden-votes on \
+  --camera-threshold 2
 run ablation-parts-whole-robot --cell "$segments" --scenes "$small" --robot-parts whole-robot
 run ablation-parts-per-link --cell "$segments" --scenes "$small" --robot-parts per-link
-run ablation-parts-per-link-balls-0.04 --cell "$segments" --scenes "$small" --robot-parts per-link --ball-radius 0.04
+run ablation-parts-per-link-balls-0.04 --cell "$segments" --scenes "$small" \
+  --robot-parts per-link --ball-radius 0.04
 run per-link-main --cell "$segments" --scenes "$scenes" --robot-parts per-link
-run per-link-balls-4cm-main --cell "$segments" --scenes "$scenes" --robot-parts per-link --ball-radius 0.04
-run ablation-parts-links-and-wrist --cell "$segments" --scenes "$small" --robot-parts links-and-wrist
+run per-link-balls-4cm-main --cell "$segments" --scenes "$scenes" --robot-parts per-link \
+  --ball-radius 0.04
+run ablation-parts-links-and-wrist --cell "$segments" --scenes "$small" \
+  --robot-parts links-and-wrist
 run ablation-parts-links-and-wrist-balls-0.04-sub-cells-3 --cell "$segments" --scenes "$small" \
   --robot-parts links-and-wrist --ball-radius 0.04 --envelope-max-move 0.06
-run links-and-wrist-main --cell "$segments" --scenes "$scenes" --robot-parts links-and-wrist --ball-radius 0.04 \
-  --envelope-max-move 0.06
-run ablation-parts-whole-robot-threshold-2 --cell "$segments" --scenes "$small" --robot-parts whole-robot \
-  --camera-threshold 2
+run links-and-wrist-main --cell "$segments" --scenes "$scenes" --robot-parts links-and-wrist \
+  --ball-radius 0.04 --envelope-max-move 0.06
+run ablation-parts-whole-robot-threshold-2 --cell "$segments" --scenes "$small" \
+  --robot-parts whole-robot --camera-threshold 2
 # Before (threshold 2, the default until 2026-12-06) and why the reach is 4: the main run's
 # scenes at threshold 2, and at threshold 3 with the reach of 3 feature cells.
 # The default cell as it was before #15's changes: threshold 2, reach 3, whole cells.
-run threshold-2-main --cell "$segments" --scenes "$scenes" --camera-threshold 2 --occlusion-reach 3 \
-  --envelope-max-move 0.18
+run threshold-2-main --cell "$segments" --scenes "$scenes" --camera-threshold 2 \
+  --occlusion-reach 3 --envelope-max-move 0.18
 run whole-cells-main --cell "$segments" --scenes "$scenes" --envelope-max-move 0.18
 run reach-3-main --cell "$segments" --scenes "$scenes" --occlusion-reach 3
 # The needless-stop target of #15 is measured on 200 scenes of seed 7: after and before.
 seed=7 run target-seed-7-arm-segments --cell "$segments" --scenes 200
-seed=7 run target-seed-7-threshold-2 --cell "$segments" --scenes 200 --camera-threshold 2 --occlusion-reach 3 \
-  --envelope-max-move 0.18
+seed=7 run target-seed-7-threshold-2 --cell "$segments" --scenes 200 --camera-threshold 2 \
+  --occlusion-reach 3 --envelope-max-move 0.18
 seed=7 run target-seed-7-whole-cells --cell "$segments" --scenes 200 --envelope-max-move 0.18
 
 echo "validation.sh: blind spots: safecell cell coverage --out $out/coverage" >&2

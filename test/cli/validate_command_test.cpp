@@ -57,9 +57,9 @@ TEST(ValidateCommand, TheCellsRobotPartsAndBallsAreTheRunsUnlessTheOptionsSay) {
     std::ifstream in(cell);
     yaml.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
-  for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"robot_parts: links-and-wrist", "robot_parts: per-link"},
-        {"ball_radius_m: 0.04", "ball_radius_m: 0.05"}}) {
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"robot_parts: links-and-wrist",
+                                                                     "robot_parts: per-link"},
+                                 {"ball_radius_m: 0.04", "ball_radius_m: 0.05"}}) {
     const auto at = yaml.find(from);
     ASSERT_NE(at, std::string::npos) << from;
     yaml.replace(at, from.size(), to);

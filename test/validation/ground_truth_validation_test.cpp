@@ -102,14 +102,18 @@ TEST_F(GroundTruthValidation, ThePipelineMissesNoCollisionWithAVisibleBody) {
   }
 }
 
-// The two scenes of the 10,000 of `validate --seed 11` (scenes 8023 and 9709; shards 8024 and
-// 9710 of 10,000) in which a person's part that the arm hides from two cameras collides: at the
+// The two scenes of the 10,000 of `validate --seed 11` (scenes 6093 and 7255; shards 6094 and
+// 7256 of 10,000) in which a person's part that the arm hides from two cameras collides: at the
 // default cell's threshold of 3 the blob each of those cameras sees must grow far enough into the
 // arm's silhouette (occlusion_reach_cells: 4) to count. With the reach of 3 feature cells the
-// same scenes miss (1 and 2 configurations): the negative control.
+// same scenes miss (1 configuration each, docs/validation.md): the negative control. It needs
+// the tables as the default cell draws them (sub-cells): whole cells, as under the sanitizers,
+// are wide enough to cover those two at the reach of 3 too, and there only the reach of 4 is
+// checked. (On the arm segments of the default cell before commit 853d384 the scenes were 8023 and
+// 9709.)
 TEST_F(GroundTruthValidation, APersonTheArmHidesFromTwoCamerasIsNotMissedAtThresholdThree) {
   ASSERT_EQ(tables_->cell.camera_threshold, 3);
-  for (const std::size_t shard : {8024U, 9710U}) {
+  for (const std::size_t shard : {6094U, 7256U}) {
     ValidationOptions options;
     options.scenes = 10000;
     options.seed = 11;
@@ -120,12 +124,14 @@ TEST_F(GroundTruthValidation, APersonTheArmHidesFromTwoCamerasIsNotMissedAtThres
     EXPECT_GT(report.colliding, 100U) << "shard " << shard;
     EXPECT_EQ(report.missed, 0U) << "shard " << shard << " at reach "
                                  << options.fusion.occlusion_reach;
+    if (kSanitized) continue;
     options.fusion.occlusion_reach = 3;
     const ValidationReport control = validate(options);
     EXPECT_EQ(control.colliding, report.colliding) << "shard " << shard;
     EXPECT_GT(control.missed, 0U) << "shard " << shard << ": the reach of 3 no longer misses";
     for (const auto& missed : control.missed_cases) {
-      EXPECT_EQ(missed.stratum, "against_arm") << "shard " << shard;
+      EXPECT_TRUE(missed.stratum == "against_arm" || missed.stratum == "reaching")
+          << "shard " << shard << ": " << missed.stratum;
       EXPECT_EQ(missed.cameras_visible, 4) << "shard " << shard;
     }
   }
