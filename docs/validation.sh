@@ -43,7 +43,8 @@ for control in empty-masks dropped-strip envelope-removal; do
 done
 run links-and-wrist-model-error --scenes "$small" --model-error
 run links-and-wrist-model-error-rotation-5deg --scenes "$small" --camera-rotation-error 5
-# The rest on the default cell before commit 853d384: arm segments on balls of 6 cm, 2 sub-cells.
+# The rest on the default cell as at f269248: arm segments on balls of 6 cm, 2 sub-cells, two
+# reduced speeds (until 853d384 the default but for a third reduced speed).
 segments="docs/validation/cell-arm-segments.yaml"
 run arm-segments-main --cell "$segments" --scenes "$scenes"
 for control in empty-masks dropped-strip envelope-removal; do

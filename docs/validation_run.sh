@@ -1,6 +1,7 @@
 # Sourced by the docs/*_validation.sh scripts (not run on its own): the shared set-up and `run`.
-# The sections these scripts write were measured on the default cell before commit 853d384 (arm
-# segments on balls of 6 cm, 2 sub-cells per joint): they derive their cells from it, and pass it
+# The sections these scripts write were measured on the default cell as it was at f269248 (arm
+# segments on balls of 6 cm, 2 sub-cells per joint, two reduced speeds; until 853d384 the default
+# but for a third reduced speed): they derive their cells from it, and pass it
 # (`--cell "$base_cell"`, `--baseline-cell "$base_cell"`) where they ran the default cell.
 base_cell=docs/validation/cell-arm-segments.yaml
 

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "../camera/random_camera.hpp"
@@ -153,6 +156,62 @@ TEST(BallGroups, DrawingByGroupsGivesTheMaskOfEveryBall) {
   if (run.full_length()) {
     EXPECT_GT(skipping_runs, run.iterations() / 8) << "too few runs skip a group";
     EXPECT_GT(control_caught, 0) << "bounds that hold only the balls' centres went unnoticed";
+  }
+}
+
+// Balls the projection draws as the whole image or not at all: one that is not finite, one around
+// the camera (across its near plane) and one behind it. Grouped with ordinary balls, each group
+// must draw what drawing every ball does, from an empty mask and from one with cells set.
+TEST(BallGroups, BallsNotFiniteAtOrBehindTheCameraAreDrawnAsEveryBallIs) {
+  const PinholeCamera camera =
+      PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 1.2, 704, 576);
+  const FeatureGrid grid;  // 64 x 64 cells of 11 x 9 px
+  const BallProjection projection(camera, grid);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Ball> odd_balls = {
+      {{nan, 0.0, 0.0}, 0.05},
+      {{0.1, 0.0, 0.0}, std::numeric_limits<double>::infinity()},
+      {{0.0, 0.0, 3.0}, 0.05},  // around the camera
+      {{0.0, 0.0, 4.0}, 0.05},  // behind it
+  };
+  for (const Ball& odd : odd_balls) {
+    const std::vector<Ball> ordinary_balls = {{{0.2, 0.1, 0.5}, 0.05}, {{0.25, 0.1, 0.5}, 0.05}};
+    std::vector<Ball> balls = {ordinary_balls[0], odd, ordinary_balls[1]};
+    std::vector<BallGroup> groups;
+    group_balls(balls, 3, groups);
+    // The ordinary balls drawn already, grown by two cells: their group's bound would be skipped
+    // were the odd ball left out of it.
+    FeatureMask ordinary(grid);
+    add_ball_rects(projection, ordinary_balls, ordinary);
+    ordinary.dilate(2, 2);
+    for (const FeatureMask& start : {FeatureMask(grid), ordinary}) {
+      FeatureMask every_ball = start;
+      add_ball_rects(projection, balls, every_ball);
+      FeatureMask grouped = start;
+      add_grouped_ball_rects(projection, balls, groups, grouped);
+      EXPECT_TRUE(grouped == every_ball) << describe({odd});
+    }
+  }
+}
+
+TEST(BallGroups, GroupsThatDoNotCutTheBallsIntoRunsAreRefused) {
+  const PinholeCamera camera =
+      PinholeCamera::look_at("c", {0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 1.2, 704, 576);
+  const FeatureGrid grid;
+  const BallProjection projection(camera, grid);
+  std::vector<Ball> balls = {
+      {{0.0, 0.0, 0.5}, 0.05}, {{0.1, 0.0, 0.5}, 0.05}, {{0.2, 0.0, 0.5}, 0.05}};
+  std::vector<BallGroup> groups;
+  group_balls(balls, 2, groups);
+  ASSERT_EQ(groups.size(), 2U);
+  FeatureMask mask(grid);
+  EXPECT_NO_THROW(add_grouped_ball_rects(projection, balls, groups, mask));
+  const std::vector<BallGroup> short_of_one = {groups[0]};  // the last ball left out
+  const std::vector<BallGroup> gap = {groups[0], {groups[1].bound, 3, 3}};  // ball 2 left out
+  std::vector<BallGroup> past = groups;
+  past.back().end = 4;  // a ball that is not there
+  for (const auto& bad : {short_of_one, gap, past}) {
+    EXPECT_THROW(add_grouped_ball_rects(projection, balls, bad, mask), std::invalid_argument);
   }
 }
 

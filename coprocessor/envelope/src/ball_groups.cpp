@@ -19,8 +19,15 @@ std::uint32_t spread_bits(std::uint32_t x) {
   return x;
 }
 
-// The smallest ball around the middle of the balls' centres that holds them all, plus the margin.
+// The smallest ball around the middle of the balls' centres that holds them all, plus the margin;
+// a ball of infinite radius when one of them is not finite (its rectangle is then the whole
+// image, as add_ball_rects draws such a ball).
 Ball bound_of(std::span<const Ball> balls) {
+  for (const Ball& ball : balls) {
+    if (!ball.centre_m.allFinite() || !std::isfinite(ball.radius_m)) {
+      return Ball{Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity()};
+    }
+  }
   Eigen::Vector3d low = balls.front().centre_m;
   Eigen::Vector3d high = low;
   for (const Ball& ball : balls) {
@@ -39,19 +46,25 @@ Ball bound_of(std::span<const Ball> balls) {
 
 void group_balls(std::vector<Ball>& balls, std::size_t group_size, std::vector<BallGroup>& groups) {
   if (group_size == 0) throw std::invalid_argument("balls grouped by 0");
+  if (balls.size() > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument(std::to_string(balls.size()) +
+                                " balls, more than a group can name");
+  }
   groups.clear();
   if (balls.empty()) return;
-  Eigen::Vector3d low = balls.front().centre_m;
-  Eigen::Vector3d high = low;
+  // The box of the finite centres; 1024 steps along its longest side.
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d high = -low;
   for (const Ball& ball : balls) {
+    if (!ball.centre_m.allFinite()) continue;
     low = low.cwiseMin(ball.centre_m);
     high = high.cwiseMax(ball.centre_m);
   }
-  // 1024 steps along the longest side of the centres' box.
   const double extent = (high - low).maxCoeff();
-  const double steps_per_m = extent > 0.0 ? 1023.0 / extent : 0.0;
+  const double steps_per_m = std::isfinite(extent) && extent > 0.0 ? 1023.0 / extent : 0.0;
   const auto z_order = [&](const Ball& ball) {
     std::uint32_t code = 0;
+    if (!ball.centre_m.allFinite() || steps_per_m <= 0.0) return code;
     for (int axis = 0; axis < 3; ++axis) {
       const auto step =
           static_cast<std::uint32_t>(std::lround((ball.centre_m[axis] - low[axis]) * steps_per_m));
@@ -70,6 +83,19 @@ void group_balls(std::vector<Ball>& balls, std::size_t group_size, std::vector<B
 
 void add_grouped_ball_rects(const BallProjection& projection, std::span<const Ball> balls,
                             std::span<const BallGroup> groups, FeatureMask& mask) {
+  // The groups must name every ball once, in order: a ball left out would never be drawn.
+  std::size_t next = 0;
+  for (const BallGroup& group : groups) {
+    if (group.first != next || group.end < group.first || group.end > balls.size()) {
+      throw std::invalid_argument("ball groups that do not cut the " +
+                                  std::to_string(balls.size()) + " balls into runs");
+    }
+    next = group.end;
+  }
+  if (next != balls.size()) {
+    throw std::invalid_argument("ball groups that name " + std::to_string(next) + " of " +
+                                std::to_string(balls.size()) + " balls");
+  }
   if (!projection.rectangles_nest()) {
     add_ball_rects(projection, balls, mask);
     return;
@@ -89,10 +115,6 @@ void add_grouped_ball_rects(const BallProjection& projection, std::span<const Ba
     for (std::size_t i = 0; i < count; ++i) {
       if (!rects[i] || mask.all_in_rect(*rects[i])) continue;
       const BallGroup& group = groups[first + i];
-      if (group.first > group.end || group.end > balls.size()) {
-        throw std::invalid_argument("a ball group past the " + std::to_string(balls.size()) +
-                                    " balls");
-      }
       drawn.insert(drawn.end(), balls.begin() + group.first, balls.begin() + group.end);
     }
     add_ball_rects(projection, drawn, mask);

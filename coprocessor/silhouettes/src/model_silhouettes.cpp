@@ -216,6 +216,7 @@ ModelSilhouettes::LineTail ModelSilhouettes::tail_balls(const GridCoords& coords
   if (found == lines.end()) {
     found = lines.begin() + static_cast<std::ptrdiff_t>(next_replaced);
     next_replaced = (next_replaced + 1) % kLinesPerThread;
+    found->instance = 0;  // no line's, until it is made whole (balls_of_bodies may throw)
     envelope.balls_of_bodies(line_start, first_body, end_body, found->balls);
     found->groups.clear();
     if (subdivision_ > 1) group_balls(found->balls, kBallsPerGroup, found->groups);

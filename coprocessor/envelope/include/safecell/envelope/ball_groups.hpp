@@ -27,14 +27,16 @@ struct BallGroup {
 
 // Orders `balls` so that near balls lie next to each other (Z-order of their centres; the set
 // of balls is unchanged) and cuts them into runs of up to `group_size` balls, each with a bound,
-// into `groups` (cleared first). Precondition: group_size >= 1 (std::invalid_argument otherwise).
+// into `groups` (cleared first). A group with a ball that is not finite gets a bound of infinite
+// radius. Throws std::invalid_argument for group_size 0 or more than 2^32 - 1 balls.
 void group_balls(std::vector<Ball>& balls, std::size_t group_size, std::vector<BallGroup>& groups);
 
 // mask |= the feature rectangle of every ball, as add_ball_rects(projection, balls, mask) does,
 // skipping each group whose bound's rectangle the mask holds all of already (or whose bound the
 // camera does not see). The same mask to the bit: where the projection's rectangles nest
 // (BallProjection::rectangles_nest()), a ball inside the bound has its rectangle inside the
-// bound's; where they do not, every ball is drawn.
+// bound's; where they do not, every ball is drawn. Throws std::invalid_argument unless the groups
+// cut the balls into consecutive runs from the first ball to the last.
 void add_grouped_ball_rects(const BallProjection& projection, std::span<const Ball> balls,
                             std::span<const BallGroup> groups, FeatureMask& mask);
 
