@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace safecell {
 namespace {
@@ -19,6 +20,18 @@ std::uint32_t spread_bits(std::uint32_t x) {
   return x;
 }
 
+// The box of the balls' finite centres (low > high when there is none).
+std::pair<Eigen::Vector3d, Eigen::Vector3d> centres_box(std::span<const Ball> balls) {
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d high = -low;
+  for (const Ball& ball : balls) {
+    if (!ball.centre_m.allFinite()) continue;
+    low = low.cwiseMin(ball.centre_m);
+    high = high.cwiseMax(ball.centre_m);
+  }
+  return {low, high};
+}
+
 // The smallest ball around the middle of the balls' centres that holds them all, plus the margin;
 // a ball of infinite radius when one of them is not finite (its rectangle is then the whole
 // image, as add_ball_rects draws such a ball).
@@ -28,12 +41,7 @@ Ball bound_of(std::span<const Ball> balls) {
       return Ball{Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity()};
     }
   }
-  Eigen::Vector3d low = balls.front().centre_m;
-  Eigen::Vector3d high = low;
-  for (const Ball& ball : balls) {
-    low = low.cwiseMin(ball.centre_m);
-    high = high.cwiseMax(ball.centre_m);
-  }
+  const auto [low, high] = centres_box(balls);
   const Eigen::Vector3d middle = 0.5 * (low + high);
   double radius_m = 0.0;
   for (const Ball& ball : balls) {
@@ -52,14 +60,10 @@ void group_balls(std::vector<Ball>& balls, std::size_t group_size, std::vector<B
   }
   groups.clear();
   if (balls.empty()) return;
-  // The box of the finite centres; 1024 steps along its longest side.
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d high = -low;
-  for (const Ball& ball : balls) {
-    if (!ball.centre_m.allFinite()) continue;
-    low = low.cwiseMin(ball.centre_m);
-    high = high.cwiseMax(ball.centre_m);
-  }
+  // 1024 steps along the longest side of the finite centres' box.
+  const auto box = centres_box(balls);
+  const Eigen::Vector3d& low = box.first;
+  const Eigen::Vector3d& high = box.second;
   const double extent = (high - low).maxCoeff();
   const double steps_per_m = std::isfinite(extent) && extent > 0.0 ? 1023.0 / extent : 0.0;
   const auto z_order = [&](const Ball& ball) {
