@@ -121,15 +121,39 @@ TEST_F(PixelTableCheckTest, AnEntryMissingItsCellsIsCaught) {
 }
 
 // Negative control the other way: silhouettes without the padding the tables were built with.
-// The tables then name cells in feature cells the tighter silhouettes do not reach.
+// The tables' cell entries then name cells in feature cells the tighter silhouettes do not reach.
+// (A difference entry can go either way: it leaves out a cell its neighbour's larger silhouette
+// holds, where the tighter silhouettes say the neighbour does not.)
 TEST_F(PixelTableCheckTest, TablesOfALargerRobotAreCaught) {
   ModelLutOptions tighter;
   tighter.padding_m = 0.0;
   const ModelSilhouettes tight(*cell_, *grid_, tighter);
   const PixelTableCheck check = check_pixel_tables(*luts_, tight, spread_cells(), 2);
   ASSERT_FALSE(check.passed());
+  std::size_t cell_entries = 0;
   for (const PixelTableMismatch& mismatch : check.first_mismatches) {
+    if (mismatch.entry != PixelTableEntry::kCells) continue;
+    ++cell_entries;
     EXPECT_TRUE(mismatch.named) << describe(mismatch, *luts_);
+  }
+  EXPECT_GT(cell_entries, 0U);
+}
+
+// The mismatches reported are the table's first, whichever of the threads' chunks ends first:
+// one thread and two report the same ones (checked on the control above, which has thousands).
+TEST_F(PixelTableCheckTest, TheReportedMismatchesDoNotDependOnTheThreads) {
+  ModelLutOptions tighter;
+  tighter.padding_m = 0.0;
+  const ModelSilhouettes tight(*cell_, *grid_, tighter);
+  const PixelTableCheck one = check_pixel_tables(*luts_, tight, spread_cells(), 1);
+  const PixelTableCheck two = check_pixel_tables(*luts_, tight, spread_cells(), 2);
+  ASSERT_GT(one.mismatches, PixelTableCheck::kMaxReported);
+  EXPECT_EQ(one.mismatches, two.mismatches);
+  ASSERT_EQ(one.first_mismatches.size(), PixelTableCheck::kMaxReported);
+  ASSERT_EQ(two.first_mismatches.size(), PixelTableCheck::kMaxReported);
+  for (std::size_t i = 0; i < PixelTableCheck::kMaxReported; ++i) {
+    EXPECT_EQ(describe(one.first_mismatches[i], *luts_), describe(two.first_mismatches[i], *luts_))
+        << "mismatch " << i;
   }
 }
 

@@ -124,7 +124,16 @@ void check_set_fits(const LutSet& luts, const ModelSilhouettes& silhouettes,
   }
 }
 
-// Collects the outcome of many chunks (called from several threads).
+// Table order: camera, part, level, block, then the entry's kind and the cell (a cell's place in
+// the sample while the check runs, its number in the result).
+bool in_table_order(const PixelTableMismatch& a, const PixelTableMismatch& b) {
+  return std::tie(a.camera, a.part, a.level, a.row, a.column, a.entry, a.cell) <
+         std::tie(b.camera, b.part, b.level, b.row, b.column, b.entry, b.cell);
+}
+
+// Collects the outcome of many chunks (called from several threads, in any order). Each chunk
+// brings the first mismatches of its run of entries; keeping the first of all of them in table
+// order gives the table's first mismatches, whichever chunk finished first.
 class Tally {
  public:
   void add(PixelTableCheck& part) {
@@ -132,11 +141,10 @@ class Tally {
     total_.entries += part.entries;
     total_.pairs += part.pairs;
     total_.mismatches += part.mismatches;
-    for (const auto& mismatch : part.first_mismatches) {
-      if (total_.first_mismatches.size() < PixelTableCheck::kMaxReported) {
-        total_.first_mismatches.push_back(mismatch);
-      }
-    }
+    auto& first = total_.first_mismatches;
+    first.insert(first.end(), part.first_mismatches.begin(), part.first_mismatches.end());
+    std::sort(first.begin(), first.end(), in_table_order);
+    if (first.size() > PixelTableCheck::kMaxReported) first.resize(PixelTableCheck::kMaxReported);
   }
   PixelTableCheck take() { return std::move(total_); }
 
@@ -276,11 +284,7 @@ PixelTableCheck check_pixel_tables(const LutSet& luts, const ModelSilhouettes& s
   check.cells = sample.size();
   // Report cells by number, not by their place in the sample; in table order.
   for (PixelTableMismatch& mismatch : check.first_mismatches) mismatch.cell = sample[mismatch.cell];
-  std::sort(check.first_mismatches.begin(), check.first_mismatches.end(),
-            [](const PixelTableMismatch& a, const PixelTableMismatch& b) {
-              return std::tie(a.camera, a.part, a.level, a.row, a.column, a.cell) <
-                     std::tie(b.camera, b.part, b.level, b.row, b.column, b.cell);
-            });
+  std::sort(check.first_mismatches.begin(), check.first_mismatches.end(), in_table_order);
   return check;
 }
 

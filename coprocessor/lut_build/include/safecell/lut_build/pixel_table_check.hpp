@@ -42,8 +42,8 @@ struct PixelTableCheck {
   std::uint64_t entries = 0;     // entries decoded
   std::uint64_t pairs = 0;       // (entry, sampled cell) pairs compared
   std::uint64_t mismatches = 0;  // of them, wrong
-  // At most kMaxReported, sorted in table order: the first each chunk of entries found (chunks
-  // run in parallel), not necessarily the table's first.
+  // The table's first kMaxReported (fewer when there are fewer), in table order: camera, part,
+  // level, block, entry kind, cell. The same whatever the thread count.
   std::vector<PixelTableMismatch> first_mismatches;
   static constexpr std::size_t kMaxReported = 16;
 
