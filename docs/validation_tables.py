@@ -566,7 +566,10 @@ w("Threshold 3 alone is not safe: a person standing against the arm may have the
   "cell's links and wrist miss at the reach of 3 (\"The default cell votes on links and "
   "wrist\"). A longer reach costs needless stops: reach 3 / 4 / 5 "
   "give " + pct(reach3["needless_stop_share"]) + " / " + pct(default["needless_stop_share"]) +
-  " / " + pct(reach5["needless_stop_share"]) + " in the ablation's scenes.")
+  " / " + pct(reach5["needless_stop_share"]) + " in the ablation's scenes. A cell file that "
+  "votes with 3 cameras or more at a shorter reach (or leaves it unset: 3) is warned about "
+  "whenever its tables load and by `safecell cell info` (`vote_warning`, "
+  "`cell_fusion_settings.hpp`).")
 w("")
 w("The closed loop showed why a higher threshold needs more than the map: at threshold 3, "
   "scenario 14 of `safecell validate --closed-loop --seed 1 --camera-threshold 3 --negative-"

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "safecell/cell/default_cell.hpp"
 #include "safecell/cli/cli_app.hpp"
 
 namespace safecell {
@@ -65,6 +66,31 @@ TEST(CellInfoCommand, ACellFileGivesTheSameReportAsTheBuiltInText) {
   EXPECT_EQ(report["joints"][0]["cells"], 18);
   EXPECT_EQ(report["joints"][1]["cells"], 9);
   EXPECT_EQ(report["cells"], 162);
+  std::filesystem::remove(path);
+}
+
+// The default cell votes as the validation found safe; the same cell at the occlusion reach of 3
+// is warned about, in the text and in the JSON.
+TEST(CellInfoCommand, AVoteTheValidationDoesNotCoverIsWarnedAbout) {
+  const CliRun built_in = safecell_cli({"cell", "info", "--json"});
+  ASSERT_EQ(built_in.exit_code, 0) << built_in.err;
+  EXPECT_TRUE(nlohmann::json::parse(built_in.out)["warnings"].empty()) << built_in.out;
+  EXPECT_EQ(safecell_cli({"cell", "info"}).out.find("warning"), std::string::npos);
+
+  std::string yaml(default_cell_yaml());
+  const std::string reach = "\nocclusion_reach_cells: 4\n";
+  ASSERT_NE(yaml.find(reach), std::string::npos);
+  yaml.replace(yaml.find(reach), reach.size(), "\nocclusion_reach_cells: 3\n");
+  const auto path = write_temp("safecell-cli-reach-3.yaml", yaml);
+  const CliRun text = safecell_cli({"cell", "info", "--cell", path.string()});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("warning: " + path.string() +
+                          ": camera_threshold 3 with occlusion_reach_cells 3 -"),
+            std::string::npos)
+      << text.out;
+  const CliRun json = safecell_cli({"cell", "info", "--json", "--cell", path.string()});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["warnings"].size(), 1U) << json.out;
   std::filesystem::remove(path);
 }
 

@@ -10,6 +10,7 @@
 #include "safecell/cell/cell_grid.hpp"
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/pipeline/cell_fusion_settings.hpp"
 
 namespace safecell {
 namespace {
@@ -50,6 +51,10 @@ nlohmann::ordered_json to_json(const CellModel& model, const CspaceGrid& grid) {
   report["cells"] = grid.cell_count();
   // A string: JSON numbers lose precision above 2^53.
   report["fingerprint"] = hex64(grid.fingerprint());
+  report["warnings"] = nlohmann::ordered_json::array();
+  if (const std::string warning = vote_warning(model); !warning.empty()) {
+    report["warnings"].push_back(warning);
+  }
   return report;
 }
 
@@ -86,6 +91,9 @@ void print_text(const CellModel& model, const CspaceGrid& grid, std::ostream& ou
   table.print(out);
   out << "\nC-space cells: " << grouped(grid.cell_count()) << "  (" << product << ")\n"
       << "fingerprint:   " << hex64(grid.fingerprint()) << '\n';
+  if (const std::string warning = vote_warning(model); !warning.empty()) {
+    out << "\nwarning: " << warning << '\n';
+  }
 }
 
 }  // namespace

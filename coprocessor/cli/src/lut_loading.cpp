@@ -4,6 +4,7 @@
 
 #include "progress_bar.hpp"
 #include "safecell/cell/entry_zones.hpp"
+#include "safecell/pipeline/cell_fusion_settings.hpp"
 #include "safecell/validation/floor_coverage.hpp"
 
 namespace safecell {
@@ -15,6 +16,9 @@ constexpr const char* kStages[kLutBuildStages] = {"building LUT-1 silhouettes", 
 }  // namespace
 
 CellModel tables_cell(const CellModel& cell, const CspaceGrid& grid, std::ostream& err) {
+  if (const std::string warning = vote_warning(cell); !warning.empty()) {
+    err << "warning: " << warning << '\n';
+  }
   CellModel tables = cell;
   if (!cell.config.forbid_blind_spots) {
     err << "warning: " << cell.config.source

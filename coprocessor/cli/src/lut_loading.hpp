@@ -16,7 +16,8 @@ inline constexpr double kBlindSpotStep_m = 0.2;
 // The cell the tables are built from: `cell` with the volumes no robot may reach into as static
 // obstacles. Blind spots (floor_coverage.hpp, at kBlindSpotStep_m) unless the cell allows them,
 // and the zones within the separation distance of each entry (entry_zones.hpp). What the cell
-// leaves open (blind spots allowed, no entries named) is a warning on `err`.
+// leaves open (blind spots allowed, no entries named), and a vote the validation does not cover
+// (vote_warning), is a warning on `err`.
 CellModel tables_cell(const CellModel& cell, const CspaceGrid& grid, std::ostream& err);
 
 // cache_folder: empty for the default. Messages (build, rebuild reason, blind spots) go to
