@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 #include "cli_run.hpp"
 #include "coarse_cell.hpp"
 
@@ -40,6 +42,19 @@ TEST(BenchCommand, CellFusionComparesTwoCellsOnTheSameFrames) {
   }
   EXPECT_EQ(report["baseline"]["cells"], report["cell"]["cells"]);
   EXPECT_GT(report["fusion_p99_ratio"].get<double>(), 0.0);
+  // The controller's map store holding every 10th fused map: one block per 512 cells, some of
+  // them mixed (the person walks in), and the default pool of a small grid holds them exactly.
+  const auto& cell_figures = report["cell"];
+  EXPECT_EQ(cell_figures["map_store_maps"].get<int>(), 4);
+  EXPECT_EQ(cell_figures["map_store_blocks"].get<double>(),
+            std::ceil(cell_figures["cells"].get<double>() / 512.0));
+  EXPECT_GT(cell_figures["map_store_mixed_blocks_max"].get<double>(), 0.0);
+  EXPECT_LE(cell_figures["map_store_mixed_blocks_max"].get<double>(),
+            cell_figures["map_store_blocks"].get<double>());
+  EXPECT_EQ(cell_figures["map_store_degraded_blocks_max"].get<double>(), 0.0);
+  // Room for the mixed blocks it held, 512 bits each.
+  EXPECT_GT(cell_figures["map_store_bytes"].get<double>(),
+            cell_figures["map_store_mixed_blocks_max"].get<double>() * 64.0);
 
   const test::CliRun absurd =
       test::safecell_cli({"bench", "--cell", cell, "--frames", "3", "--lut-cache", cache});

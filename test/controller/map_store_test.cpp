@@ -76,7 +76,7 @@ TEST(MapStore, LayoutIsSizedFromTheGridAndPool) {
   EXPECT_EQ(layout.blocks, 365u);  // 186480 / 512 rounded up
   EXPECT_EQ(layout.bytes(), 365u * 28 + 200u * 68);
   EXPECT_EQ(default_pool_blocks(186480), 730u);
-  EXPECT_EQ(default_pool_blocks(16'000'000), 46875u);
+  EXPECT_EQ(default_pool_blocks(16'000'000), 62500u);  // two maps of 31,250 blocks
   EXPECT_EQ(default_pool_blocks(100), 16u);
 }
 

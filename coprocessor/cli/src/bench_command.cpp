@@ -68,17 +68,14 @@ constexpr NamedMicroseconds kNamedMicroseconds[] = {
     {"map_updates_of_demo_sequence", "delta_encode_us"},
 };
 
-// The controller's figures: its benchmark program on the demo's maps. Empty when the program is
-// not built (a coprocessor-only build); a failure of the program is an error.
-nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
 #ifdef SAFECELL_CONTROLLER_BENCH
-  const std::filesystem::path maps =
-      std::filesystem::temp_directory_path() / ("safecell-demo-maps-" + std::to_string(getpid()));
-  write_default_cell_demo_maps(maps.string());
-  const std::string command =
-      std::string("'") + SAFECELL_CONTROLLER_BENCH + "' --json --benchmark_color=false --maps='" +
-      maps.string() + "' --benchmark_min_time=" + (quick ? "0.02 --quick" : "0.5") + " 2>&1";
-  progress << "running the controller's benchmarks (safecell-controller-bench)...\n" << std::flush;
+// Runs the controller's benchmark program on the maps in `maps` (map_sequence_writer.hpp) with
+// `arguments` added, and returns the JSON figures it prints last. Throws when it gives none.
+nlohmann::ordered_json run_controller_bench(const std::filesystem::path& maps,
+                                            const std::string& arguments) {
+  const std::string command = std::string("'") + SAFECELL_CONTROLLER_BENCH +
+                              "' --json --benchmark_color=false --maps='" + maps.string() + "' " +
+                              arguments + " 2>&1";
   std::string output;
   {
     const std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
@@ -88,16 +85,69 @@ nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
       output += buffer.data();
     }
   }
-  std::filesystem::remove(maps);
   const std::size_t json_start = output.rfind("\n{");
   if (json_start == std::string::npos) {
     throw std::runtime_error("safecell-controller-bench gave no figures:\n" + output);
   }
   return nlohmann::ordered_json::parse(output.substr(json_start + 1));
+}
+
+// A file of maps in the temporary folder, removed with this object.
+class TemporaryMaps {
+ public:
+  explicit TemporaryMaps(const std::string& what)
+      : path_(std::filesystem::temp_directory_path() /
+              ("safecell-" + what + "-maps-" + std::to_string(getpid()))) {}
+  TemporaryMaps(const TemporaryMaps&) = delete;
+  TemporaryMaps& operator=(const TemporaryMaps&) = delete;
+  ~TemporaryMaps() {
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
+  }
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+#endif
+
+// The controller's figures: its benchmark program on the demo's maps. Empty when the program is
+// not built (a coprocessor-only build); a failure of the program is an error.
+nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
+#ifdef SAFECELL_CONTROLLER_BENCH
+  const TemporaryMaps maps("demo");
+  write_default_cell_demo_maps(maps.path().string());
+  progress << "running the controller's benchmarks (safecell-controller-bench)...\n" << std::flush;
+  return run_controller_bench(
+      maps.path(), std::string("--benchmark_min_time=") + (quick ? "0.02 --quick" : "0.5"));
 #else
   (void)quick;
   (void)progress;
   return nlohmann::ordered_json::object();
+#endif
+}
+
+// `bench --cell`: the cell's fusion, and, where the controller's benchmark program is built, its
+// map store holding the cell's sampled maps (the store's default pool for the cell's grid).
+CellFusionFigures cell_figures(const std::string& cell_path, const BenchOptions& options,
+                               std::ostream& progress) {
+#ifdef SAFECELL_CONTROLLER_BENCH
+  const TemporaryMaps maps("cell");
+  CellFusionFigures figures = measure_cell_fusion(cell_path, options.lut_cache, options.frames,
+                                                  maps.path().string(), progress);
+  progress << "the controller's map store holding the maps (safecell-controller-bench)...\n"
+           << std::flush;
+  const nlohmann::ordered_json store = run_controller_bench(
+      maps.path(), "--quick --benchmark_filter=map_store_memory --benchmark_min_time=0.02");
+  const auto frames = static_cast<std::size_t>(options.frames);  // 10.. (checked before)
+  figures.map_store_maps = static_cast<int>((frames + kMapSampleStride - 1) / kMapSampleStride);
+  figures.map_store_bytes = store.at("map_store_bytes").get<double>();
+  figures.map_store_blocks = store.at("map_store_blocks").get<double>();
+  figures.map_store_mixed_blocks_max = store.at("map_store_mixed_blocks_max").get<double>();
+  figures.map_store_degraded_blocks_max = store.at("map_store_degraded_blocks_max").get<double>();
+  return figures;
+#else
+  return measure_cell_fusion(cell_path, options.lut_cache, options.frames, "", progress);
 #endif
 }
 
@@ -118,7 +168,12 @@ nlohmann::ordered_json cell_fusion_json(const CellFusionFigures& figures) {
           {"frames_stopped", figures.frames_stopped},
           {"features_p50_ms", figures.features_p50_ms},
           {"forbidden_share_mean", figures.forbidden_share_mean},
-          {"forbidden_share_max", figures.forbidden_share_max}};
+          {"forbidden_share_max", figures.forbidden_share_max},
+          {"map_store_maps", figures.map_store_maps},
+          {"map_store_bytes", figures.map_store_bytes},
+          {"map_store_blocks", figures.map_store_blocks},
+          {"map_store_mixed_blocks_max", figures.map_store_mixed_blocks_max},
+          {"map_store_degraded_blocks_max", figures.map_store_degraded_blocks_max}};
 }
 
 // `bench --cell`: the cell's fusion against the default cell's, the same frames of the demo.
@@ -130,11 +185,9 @@ void run_cell_fusion_bench(const BenchOptions& options, std::ostream& out, std::
            << (options.baseline_cell_path.empty() ? "the default cell" : options.baseline_cell_path)
            << ":\n"
            << std::flush;
-  const CellFusionFigures baseline =
-      measure_cell_fusion(options.baseline_cell_path, options.lut_cache, options.frames, progress);
+  const CellFusionFigures baseline = cell_figures(options.baseline_cell_path, options, progress);
   progress << "the cell of " << options.cell_path << ":\n" << std::flush;
-  const CellFusionFigures cell =
-      measure_cell_fusion(options.cell_path, options.lut_cache, options.frames, progress);
+  const CellFusionFigures cell = cell_figures(options.cell_path, options, progress);
   const double ratio =
       baseline.fusion_p99_ms > 0.0 ? cell.fusion_p99_ms / baseline.fusion_p99_ms : 0.0;
   const double served_ratio = baseline.served_fusion_p99_ms > 0.0
@@ -175,6 +228,16 @@ void run_cell_fusion_bench(const BenchOptions& options, std::ostream& out, std::
       << " frames the protective separation stopped the robot in (every cell forbidden then); "
       << "served p99 " << fixed(served_ratio, 1) << "x the baseline's. The two passes take "
       << "turns going first, 30 frames at a time\n";
+  for (const CellFusionFigures* figures : {&baseline, &cell}) {
+    if (figures->map_store_maps == 0) continue;
+    out << figures->cell << ": the controller's map store holds " << figures->map_store_maps
+        << " of the maps (every " << kMapSampleStride << "th) in "
+        << fixed(figures->map_store_bytes / 1e6, 2) << " MB, up to "
+        << grouped(static_cast<std::uint64_t>(figures->map_store_mixed_blocks_max)) << " of "
+        << grouped(static_cast<std::uint64_t>(figures->map_store_blocks))
+        << " blocks mixed; degraded to forbidden: "
+        << grouped(static_cast<std::uint64_t>(figures->map_store_degraded_blocks_max)) << "\n";
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "safecell/bench/map_sequence_writer.hpp"
 #include "safecell/sim/demo_scenario.hpp"
 #include "safecell/validation/percentile.hpp"
 #include "simulated_sensing.hpp"
@@ -10,7 +11,7 @@
 namespace safecell {
 
 CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::string& lut_cache,
-                                      int frames, std::ostream& log) {
+                                      int frames, const std::string& maps_path, std::ostream& log) {
   SimulatedSensing sensing(cell_path, lut_cache, 1, log);
   CellFusionFigures figures;
   figures.cell = sensing.cell.config.name;
@@ -44,6 +45,7 @@ CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::s
   std::vector<double> features_ms;
   std::vector<double> served_ms;
   double share_sum = 0.0;
+  std::vector<CellSet> sampled_maps;
   const auto fuse_every_map = [&](std::size_t frame) {
     sensing.pipeline.skip_map_when_too_close(false);
     const CellSet& map = sensing.pipeline.process(frame_sets[frame], scenes[frame].q);
@@ -52,6 +54,7 @@ CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::s
     const double share = static_cast<double>(map.count()) / static_cast<double>(figures.cells);
     share_sum += share;
     figures.forbidden_share_max = std::max(figures.forbidden_share_max, share);
+    if (!maps_path.empty() && frame % kMapSampleStride == 0) sampled_maps.push_back(map);
   };
   const auto serve = [&](std::size_t frame) {
     sensing.pipeline.skip_map_when_too_close(true);
@@ -84,6 +87,7 @@ CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::s
   figures.fusion_max_ms = percentile(fusion_ms, 1.0);
   figures.features_p50_ms = percentile(features_ms, 0.5);
   figures.forbidden_share_mean = frames > 0 ? share_sum / frames : 0.0;
+  if (!maps_path.empty()) write_map_sequence_file(maps_path, sensing.grid, sampled_maps);
   return figures;
 }
 

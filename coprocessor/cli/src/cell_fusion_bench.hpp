@@ -6,8 +6,11 @@
 // the camera vote, static obstacles): median, p99 and worst, with the ratio to the default cell.
 // Twice: with every frame's map fused, and as the service runs them, where a frame in which the
 // protective separation stops the robot makes no map (every cell is forbidden then).
+// The maps of every kMapSampleStride-th frame can be written (map_sequence_writer.hpp) for the
+// controller's benchmark program, which reports what its map store needs to hold them.
 // Private to the CLI.
 
+#include <cstddef>
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -34,12 +37,24 @@ struct CellFusionFigures {
   double features_p50_ms = 0.0;
   double forbidden_share_mean = 0.0;  // of the maps over the frames
   double forbidden_share_max = 0.0;
+  // The controller's map store (MapStoreLayout, default pool) holding the sampled maps, as
+  // safecell-controller-bench reports it; map_store_maps 0: not measured.
+  int map_store_maps = 0;
+  double map_store_bytes = 0.0;
+  double map_store_blocks = 0.0;
+  double map_store_mixed_blocks_max = 0.0;
+  double map_store_degraded_blocks_max = 0.0;  // held as forbidden: the pool was too small
 };
+
+// Every how many frames a fused map is written for the map store's figures (30 of 300 frames: a
+// 6 cm grid's maps take 2 MB each).
+inline constexpr std::size_t kMapSampleStride = 10;
 
 // cell_path: empty for the default cell; lut_cache: empty for the default folder. Messages
 // (tables built, references) go to `log`. Both passes run every frame once, taking turns going
-// first a second of frames (30) at a time.
+// first a second of frames (30) at a time. maps_path: where to write the fused maps of frames
+// 0, kMapSampleStride, ... (empty: none); returns with map_store_maps still 0.
 CellFusionFigures measure_cell_fusion(const std::string& cell_path, const std::string& lut_cache,
-                                      int frames, std::ostream& log);
+                                      int frames, const std::string& maps_path, std::ostream& log);
 
 }  // namespace safecell
