@@ -1170,6 +1170,135 @@ def fine_grid_section():
         "`" + fine_commands[name] + "` (" + n(fine_seconds[name]) + ")"
         for name in fine_commands if name != "build") + ".")
     w("")
+    fine_grid_again_section()
+
+
+# docs/fine_grid_validation.sh run again, its reports moved into their own folder.
+FINE_GRID_AGAIN = ("2026-12-07", "fd237e7", "at-fd237e7")
+
+
+def fine_grid_again_section():
+    """The 6 cm grid's script run again on a later machine, with the map store's figures."""
+    date, commit, sub = FINE_GRID_AGAIN
+    again = os.path.join(folder, "fine-grid", sub)
+    if not os.path.exists(os.path.join(again, "build.json")):
+        return
+    rel = os.path.join("fine-grid", sub)
+    again_commands, again_seconds = read_commands(os.path.join(rel, "commands.tsv"))
+
+    def r(name):
+        return report(os.path.join(rel, name))
+
+    build, bench = r("build"), r("bench")
+    verified = build["verified"]
+    with open(os.path.join(again, "build-peak-rss-kb.txt")) as f:
+        peak_gb = int(f.read().split()[-1]) / 1e6
+    runs = [r(f"bench-again-{k}") for k in (1, 2, 3)]
+    small_pool = r("bench-store-pool-1.5x")
+
+    def fused(b):
+        c = b["cell"]
+        return (f"{c['fusion_p50_ms']:.2f} / {c['fusion_p99_ms']:.2f} / {c['fusion_max_ms']:.2f} ms;"
+                f" as served {c['served_fusion_p50_ms']:.2f} / {c['served_fusion_p99_ms']:.2f} / "
+                f"{c['served_fusion_max_ms']:.2f} ms, {c['frames_stopped']} frames stopped "
+                f"(18 cm: p99 {b['baseline']['fusion_p99_ms']:.2f} ms)")
+
+    def store(b):
+        c = b["cell"]
+        return (f"{c['map_store_bytes'] / 1e6:.2f} MB, up to "
+                f"{n(int(c['map_store_mixed_blocks_max']))} of {n(int(c['map_store_blocks']))} "
+                f"blocks mixed, {n(int(c['map_store_degraded_blocks_max']))} degraded")
+
+    w(f"### Run again: {date}, commit {commit}")
+    w("")
+    w(f"`bash docs/fine_grid_validation.sh` run again on {date} at commit `{commit}`, on a new "
+      "machine of the same kind (2 cores), nothing else running; its reports are in "
+      f"`docs/validation/{rel}/`. The script derives the 6 cm cell from the arm segments' cell as "
+      "it is now (camera threshold 3 with the occlusion reach of 4 feature cells; the runs above "
+      "had threshold 2 and no reach), and the tables are the same file as above (fingerprint `" +
+      build["fingerprint"] + "`). The fusion was timed again three times after the map store "
+      "change below (commit 97203e4).")
+    w("")
+    w(table(["figure", "6 cm", "target"], [
+        ["tables built (2 cores, with the check of 2,000 cells)", build_time(build), "<= 600 s"],
+        ["peak memory of the build", f"{peak_gb:.1f} GB", "never the dense table"],
+        ["LUT-2 per camera", f"{build['bytes_per_camera'] / 1e6:.0f} MB", "<= 256 MB"],
+        ["tables against the silhouettes computed directly",
+         n(verified["mismatches"]) + " mismatches in " + n(verified["pairs"]) + " pairs", "0"],
+        ["fusion p50 / p99 / worst, every map fused (demo, " + n(bench["cell"]["frames"]) +
+         " frames, one thread), right after the build", fused(bench), "p99 <= 10 ms"],
+    ] + [
+        [f"the same, run {k} of 3 at 97203e4", fused(b), "p99 <= 10 ms"]
+        for k, b in enumerate(runs, 1)
+    ] + [
+        ["the controller's map store holding every 10th fused map (" +
+         str(small_pool["cell"]["map_store_maps"]) + "), the pool of " + commit +
+         " (1.5 blocks per grid block)", store(small_pool), "0 degraded"],
+        ["the same, the pool of 97203e4 (2 blocks per grid block)", store(runs[0]),
+         "0 degraded"],
+    ]))
+    w("")
+    rows = []
+    for threshold in (2, 3):
+        for name, label in [(f"default-validate-seed7-threshold-{threshold}", "0.18 m"),
+                            (f"validate-seed7-threshold-{threshold}", "0.06 m")]:
+            v = r(name)
+            c = causes(v)
+            rows.append([label, str(threshold), n(v["scenes"]), n(v["colliding"]), n(v["missed"]),
+                         n(v["unseen"]), pct(v["needless_stop_share"]), c[1], c[2],
+                         pct(v["forbidden_share"])])
+    big = r("validate-seed11")
+    c = causes(big)
+    rows.append(["0.06 m, seed 11", str(big["camera_threshold"]), n(big["scenes"]),
+                 n(big["colliding"]), n(big["missed"]), n(big["unseen"]),
+                 pct(big["needless_stop_share"]), c[1], c[2], pct(big["forbidden_share"])])
+    w(table(["m_max", "threshold", "scenes", "colliding", "missed", "unseen", "needless stops",
+             "visual hull", "envelope", "forbidden"], rows))
+    w("")
+    t3, d3 = r("validate-seed7-threshold-3"), r("default-validate-seed7-threshold-3")
+    served = [b["cell"]["served_fusion_p99_ms"] for b in [bench] + runs]
+    every = [b["cell"]["fusion_p99_ms"] for b in [bench] + runs]
+    slow = max([bench] + runs, key=lambda b: b["cell"]["served_fusion_p99_ms"])
+    quick = [b for b in [bench] + runs if b is not slow]
+    w(f"- **The build takes {build['build_s']:.0f} s here**, about half of what the rows above "
+      "took on the machines of earlier sessions (472-681 s, the same tables to the byte): the "
+      "600 s target holds on this machine with room, and machines of one kind differ by as much "
+      "as that room.")
+    w(f"- **Every map fused, p99 is {min(every):.1f}-{max(every):.1f} ms in four runs: the 10 ms "
+      f"target is not met.** As served it is {min(b['cell']['served_fusion_p99_ms'] for b in quick):.1f}"
+      f"-{max(b['cell']['served_fusion_p99_ms'] for b in quick):.1f} ms in three runs and "
+      f"{slow['cell']['served_fusion_p99_ms']:.1f} ms in the fourth, where the 18 cm cell was "
+      f"slower too (p99 {slow['baseline']['fusion_p99_ms']:.2f} against "
+      f"{min(b['baseline']['fusion_p99_ms'] for b in quick):.2f}-"
+      f"{max(b['baseline']['fusion_p99_ms'] for b in quick):.2f} ms): the same work on a slower "
+      "moment of the machine. At threshold 3 the protective separation stops the robot in fewer "
+      f"frames ({bench['cell']['frames_stopped']} of {bench['cell']['frames']}, against 73 at "
+      "threshold 2 above), so more of the heavy frames are fused as served, and served p99 is "
+      "within a millisecond of the target instead of 2-5 ms under it.")
+    w(f"- **At threshold 3 with the reach of 4 the 6 cm grid misses nothing**: 0 missed on seed "
+      f"7's 200 scenes (where the 6 cm run without the reach missed 1, above) and on seed 11's "
+      f"{n(big['scenes'])}. Its needless stops are " + pct(t3["needless_stop_share"]) + " and " +
+      pct(big["needless_stop_share"]) + ", against " + pct(d3["needless_stop_share"]) +
+      " for the 18 cm grid on seed 7.")
+    w("- **The controller's map store.** The controller issue sized the pool of a grid above 4096 "
+      "blocks at one and a half blocks per grid block, from the demo's maps upsampled to the 6 cm "
+      "grid (4.18 MB). `bench --cell` now hands every 10th fused map of a cell to "
+      "safecell-controller-bench, which offers each as a keyframe while the last is held: the "
+      "6 cm grid's own maps mix nearly every block, a keyframe needs room for the held map and "
+      "the new one, and that pool degraded up to " +
+      n(int(small_pool["cell"]["map_store_degraded_blocks_max"])) + " blocks to forbidden (safe, but a "
+      "delta that touches a degraded block is refused and the link asks for another keyframe). "
+      "The default pool is now two maps' worth on every grid: " +
+      f"{runs[0]['cell']['map_store_bytes'] / 1e6:.2f} MB on the 6 cm grid, 0 degraded, "
+      f"{(runs[0]['cell']['map_store_bytes'] - small_pool['cell']['map_store_bytes']) / 1e6:.1f}"
+      " MB above the controller issue's figure (a dense double buffer of the grid would take "
+      f"{2 * ((runs[0]['cell']['cells'] + 63) // 64) * 8 / 1e6:.2f} MB: on maps like these "
+      "the blocks do not compress).")
+    w("")
+    w("Commands (seconds on this machine): " + "; ".join(
+        "`" + again_commands[name] + "` (" + n(again_seconds[name]) + ")"
+        for name in again_commands if name != "build") + ".")
+    w("")
 
 
 def needless_columns(r):
