@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "safecell/cellsets/cell_slices.hpp"
@@ -165,6 +167,62 @@ TEST(CellLines, ALowerLevelLineStandsForAllItsCopies) {
   CellSet expected(420);
   for (CellIndex copy = 0; copy < 7; ++copy) expected.set_range(copy * 60 + 13, copy * 60 + 16);
   EXPECT_EQ(packed, expected);
+}
+
+// Fusion votes on a part moved by the first joints at the level its sets were written at, and
+// folds the result (fold_to, level_lines, level_lines_to_add_to): the same bits as folding each
+// set whole. The sets then lie above the level they were written at, and clear() must clear them.
+TEST(CellLines, ASetFoldedToALevelHoldsTheSameCellsAndClearsWhole) {
+  test::PropertyRun run(300);
+  for (int i = 0; i < run.iterations(); ++i) {
+    BoxAxes axes = random_axes(run.rng());
+    if (axes.count < 2) continue;
+    const CellIndex cells = cell_count_of(axes);
+    const std::uint32_t last = axes.count - 1;
+    CellLines lines(axes, cells);
+    CellSet oracle(cells);
+    const int sets = std::uniform_int_distribution<int>(1, 3)(run.rng());
+    for (int k = 0; k < sets; ++k) {
+      // Independent of the last axis, so that it is written below the full grid.
+      const CellSet set =
+          repeat_slice(cells_in_every_slice(random_runs(run.rng(), cells, axes.cells[0]),
+                                            axes.stride[last], axes.cells[last]),
+                       axes.cells[last]);
+      add(lines, set, axes);
+      oracle |= set;
+    }
+    const std::uint32_t through = lines.written_through();
+    const std::uint32_t level = std::uniform_int_distribution<std::uint32_t>(
+        std::max<std::uint32_t>(through, 1), axes.count)(run.rng());
+    const std::string input = "grid of " + std::to_string(cells) + " cells, " +
+                              std::to_string(axes.count) + " axes, joint 0 has " +
+                              std::to_string(axes.cells[0]) + ", written through level " +
+                              std::to_string(through) + ", folded to " + std::to_string(level);
+    ASSERT_LT(through, axes.count) << input;
+    if (through > 1) {
+      EXPECT_THROW(lines.fold_to(through - 1), std::logic_error) << input;
+    }
+    lines.fold_to(level);
+    EXPECT_EQ(lines.folded(), level == axes.count || oracle.count() == 0) << input;
+    // The level's lines, added to another set at that level, stand for the same cells.
+    CellLines voted(axes, cells);
+    const std::span<const std::uint64_t> at_level = lines.level_lines(level);
+    const std::span<std::uint64_t> into = voted.level_lines_to_add_to(level);
+    ASSERT_EQ(into.size(), at_level.size()) << input;
+    std::copy(at_level.begin(), at_level.end(), into.begin());
+    CellSet packed(cells);
+    voted.pack_into(packed);
+    ASSERT_EQ(packed, oracle) << input;
+    CellLines whole = lines;
+    whole.pack_into(packed);
+    ASSERT_EQ(packed, oracle) << input;
+    // Cleared, and written again: nothing of the bits folded up to the level may stay.
+    lines.clear();
+    const CellSet again = random_runs(run.rng(), cells, axes.cells[0]);
+    add(lines, again, axes);
+    lines.pack_into(packed);
+    ASSERT_EQ(packed, again) << input << ", cleared";
+  }
 }
 
 TEST(CellLines, OneWordPerLineUpTo64CellsAlongJointZero) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "safecell/cellsets/leb128.hpp"
 #include "safecell/compute/word_loops.hpp"
@@ -49,10 +50,17 @@ CellLines::CellLines(const BoxAxes& axes, std::uint32_t cell_count)
 
 void CellLines::clear() {
   // A set nothing was added to since it was cleared is clear: fusion clears every part's set of
-  // every camera each cycle, most of them untouched, and on a fine grid each is megabytes.
-  if (!clear_) std::fill(words_.begin(), words_.end(), 0);
+  // every camera each cycle, most of them untouched, and on a fine grid each is megabytes. No bit
+  // lies above written_through_: a set of a part moved by the first joints only, voted on at its
+  // level, clears that much.
+  if (!clear_ && written_through_ > 0) {
+    std::fill_n(
+        words_.begin(),
+        static_cast<std::ptrdiff_t>(levels_.first_line[written_through_ + 1] * words_per_line_), 0);
+  }
   clear_ = true;
   lowest_written_ = levels_.count;
+  written_through_ = 0;
 }
 
 std::size_t CellLines::add_strips(const std::uint8_t* begin, const std::uint8_t* end) {
@@ -71,7 +79,10 @@ std::size_t CellLines::add_strips(const std::uint8_t* begin, const std::uint8_t*
     // Joint 0 fits a word, so every run's first cell and length are below 128: one byte each.
     for (std::uint32_t k = 0; k < count; ++k, at += 2) strip[k] |= bit_run(at[0], at[1]);
     written += count;
-    if (at == end) return written;
+    if (at == end) {
+      note_written_through(line + count - 1);
+      return written;
+    }
     line += read_leb128(at);
   }
 }
@@ -101,13 +112,16 @@ std::size_t CellLines::add_strips_long_lines(const std::uint8_t* begin, const st
       words[last_word] |= to_last;
     }
     written += count;
-    if (at == end) return written;
+    if (at == end) {
+      note_written_through(line + count - 1);
+      return written;
+    }
     line += read_leb128(at);
   }
 }
 
-void CellLines::fold() {
-  for (std::uint32_t level = lowest_written_; level < levels_.count; ++level) {
+void CellLines::fold_levels(std::uint32_t from, std::uint32_t to) {
+  for (std::uint32_t level = from; level < to; ++level) {
     std::uint64_t* const low = words_.data() + levels_.first_line[level] * words_per_line_;
     std::uint64_t* up = words_.data() + levels_.first_line[level + 1] * words_per_line_;
     const std::size_t words = levels_.lines_of(level) * words_per_line_;
@@ -116,7 +130,48 @@ void CellLines::fold() {
     }
     std::fill(low, low + words, 0);
   }
+}
+
+void CellLines::fold() {
+  if (lowest_written_ == levels_.count) return;
+  fold_levels(lowest_written_, levels_.count);
   lowest_written_ = levels_.count;
+  written_through_ = levels_.count;
+}
+
+void CellLines::check_level(std::uint32_t level) const {
+  if (level < 1 || level > levels_.count) {
+    throw std::invalid_argument("cell lines: level " + std::to_string(level) + " of 1.." +
+                                std::to_string(levels_.count));
+  }
+}
+
+void CellLines::fold_to(std::uint32_t level) {
+  check_level(level);
+  if (written_through_ > level) {
+    throw std::logic_error("cell lines: folding to level " + std::to_string(level) +
+                           ", below bits written at level " + std::to_string(written_through_));
+  }
+  // Nothing below the level: the set is empty, or lies at the level already.
+  if (lowest_written_ >= level) return;
+  fold_levels(lowest_written_, level);
+  lowest_written_ = level;
+  written_through_ = level;  // the bits below it moved up to it
+}
+
+std::span<const std::uint64_t> CellLines::level_lines(std::uint32_t level) const {
+  check_level(level);
+  return std::span<const std::uint64_t>(words_).subspan(levels_.first_line[level] * words_per_line_,
+                                                        levels_.lines_of(level) * words_per_line_);
+}
+
+std::span<std::uint64_t> CellLines::level_lines_to_add_to(std::uint32_t level) {
+  check_level(level);
+  clear_ = false;
+  lowest_written_ = std::min(lowest_written_, level);
+  written_through_ = std::max(written_through_, level);
+  return std::span<std::uint64_t>(words_).subspan(levels_.first_line[level] * words_per_line_,
+                                                  levels_.lines_of(level) * words_per_line_);
 }
 
 std::span<const std::uint64_t> CellLines::lines() const {

@@ -183,7 +183,10 @@ ForbiddenMapFusion::ForbiddenMapFusion(const LutSet& luts, const RobotSilhouette
   seen_lines_.assign(words, 0);
   at_least_.assign(static_cast<std::size_t>(settings.camera_threshold),
                    std::vector<std::uint64_t>(kAtLeastBlockWords, 0));
-  critical_lines_.assign(words, 0);
+  critical_lines_ = observable_lines_.front();
+  critical_lines_.clear();
+  vote_sets_.assign(cameras, nullptr);
+  suspect_sets_.assign(cameras, nullptr);
   for (std::size_t part = 0; part < luts.parts.size(); ++part) {
     camera_lines_.clear();
     for (std::size_t camera = 0; camera < cameras; ++camera) {
@@ -208,7 +211,12 @@ CellSet ForbiddenMapFusion::suspicious(std::size_t part, std::size_t camera) con
   CellSet cells(critical_.cell_count());
   // After forbid_all the lines are the last vote's; no part was voted on since.
   if (!counts_.part_voted.at(part)) return cells;
-  lines.pack_lines(lines.lines(), cells);
+  if (lines.folded()) {
+    lines.pack_lines(lines.lines(), cells);
+    return cells;
+  }
+  CellLines whole = lines;  // voted on at a lower level: folded here, for explanations only
+  whole.pack_into(cells);
   return cells;
 }
 
@@ -364,7 +372,7 @@ const CellSet& ForbiddenMapFusion::vote(const std::vector<CameraObservation>& ob
   }
   removed_from_ = nullptr;
   check(observations);  // the same object, but its masks may have changed since
-  std::fill(critical_lines_.begin(), critical_lines_.end(), 0);
+  critical_lines_.clear();
   const auto threshold = static_cast<std::size_t>(settings_.camera_threshold);
   const bool hidden_votes = settings_.hidden_votes;
   bool any_critical = false;
@@ -372,12 +380,14 @@ const CellSet& ForbiddenMapFusion::vote(const std::vector<CameraObservation>& ob
     const VoterCounts voters = find_voters(observations, part);
     counts_.part_voted[part] = voters.seeing >= 1 && voters.voting >= threshold;
     counts_.part_critical[part] = false;
+    if (counts_.part_voted[part] && any_critical) critical_lines_.fold();
     counts_.part_covered[part] =
         counts_.part_voted[part] && any_critical &&
-        !any_missing(critical_lines_.data(), votable_lines_[part].data(), critical_lines_.size());
+        !any_missing(critical_lines_.lines().data(), votable_lines_[part].data(),
+                     critical_lines_.lines().size());
     const bool voted = counts_.part_voted[part] && !counts_.part_covered[part];
-    camera_lines_.clear();
-    if (hidden_votes) std::fill(seen_lines_.begin(), seen_lines_.end(), 0);
+    std::fill(vote_sets_.begin(), vote_sets_.end(), nullptr);
+    std::fill(suspect_sets_.begin(), suspect_sets_.end(), nullptr);
     for (std::size_t camera = 0; camera < observations.size(); ++camera) {
       const std::size_t at = slot(part, camera);
       CellLines& suspicious = suspicious_lines_[at];
@@ -385,19 +395,16 @@ const CellSet& ForbiddenMapFusion::vote(const std::vector<CameraObservation>& ob
       counts_.saturated[at] = false;
       if (!voted || !voting_[camera]) continue;
       if (!observations[camera].known) {
-        camera_lines_.push_back(observable_lines_[at].lines());
-        if (hidden_votes)
-          or_words(seen_lines_.data(), camera_lines_.back().data(), seen_lines_.size());
+        vote_sets_[camera] = suspect_sets_[camera] = &observable_lines_[at];
         continue;
       }
       if (seeing_[camera]) {
         counts_.saturated[at] =
             back_project(part, camera, obstacles_[camera], obstacles_[camera], suspicious);
       }
-      suspicious.fold();
-      if (hidden_votes) or_words(seen_lines_.data(), suspicious.lines().data(), seen_lines_.size());
+      suspect_sets_[camera] = &suspicious;
       if (!hiding_[camera] || counts_.saturated[at]) {
-        camera_lines_.push_back(suspicious.lines());
+        vote_sets_[camera] = &suspicious;
         continue;
       }
       // Suspicious or hidden: what the camera sees, then what its robot pixels may hide (all
@@ -405,20 +412,47 @@ const CellSet& ForbiddenMapFusion::vote(const std::vector<CameraObservation>& ob
       CellLines& voting = voting_lines_[camera];
       voting = suspicious;
       back_project(part, camera, hidden_[camera], observations[camera].blocked, voting);
-      voting.fold();
-      camera_lines_.push_back(voting.lines());
+      vote_sets_[camera] = &voting;
     }
     if (!voted) continue;
-    // Counted in the line layout, so that only the result is packed. With hidden votes some
-    // camera must see an obstacle through the part.
+    // The vote is counted at the highest level any set was written at: the same bits as in the
+    // full grid (folding copies lines along the axes above, and counting works bit by bit), for
+    // a part moved by the first joints a fraction of the work; the result is folded once, with
+    // the other parts', before the map is packed.
+    std::uint32_t level = 1;
+    for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+      for (const CellLines* set : {vote_sets_[camera], suspect_sets_[camera]}) {
+        if (set != nullptr) level = std::max(level, set->written_through());
+      }
+    }
+    // With hidden votes some camera must see an obstacle through the part: the cells are masked
+    // with what the cameras suspect. Where every camera votes with what it suspects, that mask
+    // holds every cell one camera votes for, so it would change nothing and is not made.
+    bool some_vote_hidden = false;
+    for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+      some_vote_hidden = some_vote_hidden || vote_sets_[camera] != suspect_sets_[camera];
+    }
+    camera_lines_.clear();
+    std::span<std::uint64_t> seen;
+    if (hidden_votes && some_vote_hidden) {
+      seen = std::span<std::uint64_t>(seen_lines_).first(critical_lines_.level_lines(level).size());
+      std::fill(seen.begin(), seen.end(), 0);
+    }
+    for (std::size_t camera = 0; camera < observations.size(); ++camera) {
+      if (vote_sets_[camera] == nullptr) continue;
+      vote_sets_[camera]->fold_to(level);
+      suspect_sets_[camera]->fold_to(level);
+      camera_lines_.push_back(vote_sets_[camera]->level_lines(level));
+      if (!seen.empty()) {
+        or_words(seen.data(), suspect_sets_[camera]->level_lines(level).data(), seen.size());
+      }
+    }
     counts_.part_critical[part] =
-        or_at_least(camera_lines_, settings_.camera_threshold,
-                    hidden_votes ? std::span<const std::uint64_t>(seen_lines_)
-                                 : std::span<const std::uint64_t>(),
-                    at_least_, critical_lines_);
+        or_at_least(camera_lines_, settings_.camera_threshold, seen, at_least_,
+                    critical_lines_.level_lines_to_add_to(level));
     any_critical = any_critical || counts_.part_critical[part];
   }
-  observable_lines_.front().pack_lines(critical_lines_, critical_);
+  critical_lines_.pack_into(critical_);
   counts_.critical_cells = critical_.count();
   counts_.forbidden_cells = forbidden_.assign_union(critical_, luts_.static_cells);
   return forbidden_;

@@ -33,6 +33,22 @@ class CellLines {
   std::size_t add_strips(const std::uint8_t* begin, const std::uint8_t* end);
   // Folds the levels into the full grid (nothing to do when no strip went below it since).
   void fold();
+  // Folds the levels below `level` (1..level_count()) into it, no further: the set then lies
+  // wholly at that level, which level_lines() reads. A set whose strips all lie at a low level (a
+  // robot part moved by the first joints only) is voted on there, a fraction of the full grid.
+  // Precondition: written_through() <= level (std::logic_error otherwise).
+  void fold_to(std::uint32_t level);
+  // The highest level a bit was written at since the set was cleared (0: none); a fold to the
+  // full grid makes it level_count().
+  [[nodiscard]] std::uint32_t written_through() const { return written_through_; }
+  [[nodiscard]] std::uint32_t level_count() const { return levels_.count; }
+  // The lines of one level, as fold_to(level) leaves them.
+  [[nodiscard]] std::span<const std::uint64_t> level_lines(std::uint32_t level) const;
+  // The same, for the caller to OR bits into: they stand for those lines along every axis above
+  // the level once the set is folded.
+  [[nodiscard]] std::span<std::uint64_t> level_lines_to_add_to(std::uint32_t level);
+  // Whether the set lies wholly in the full grid (lines() may be read).
+  [[nodiscard]] bool folded() const { return lowest_written_ == levels_.count; }
   // The full grid, a line after the other (throws std::logic_error when strips were added below
   // it since the last fold).
   [[nodiscard]] std::span<const std::uint64_t> lines() const;
@@ -50,12 +66,22 @@ class CellLines {
 
  private:
   std::size_t add_strips_long_lines(const std::uint8_t* begin, const std::uint8_t* end);
+  // Folds levels from..to-1 into `to`, zeroing them.
+  void fold_levels(std::uint32_t from, std::uint32_t to);
+  // Notes that `line` (the last line of an entry's strips, the highest) was written.
+  void note_written_through(std::size_t line) {
+    const std::uint32_t level = levels_.level_of(line);
+    if (level > written_through_) written_through_ = level;
+  }
+  void check_level(std::uint32_t level) const;
 
   BoxAxes axes_;
   LineLevels levels_;
   std::uint32_t words_per_line_ = 1;  // ceil(cells along joint 0 / 64)
   // The lowest level written since the last fold (levels_.count: none below the full grid).
   std::uint32_t lowest_written_ = 0;
+  // The highest level written since the set was cleared (0: none): no bit lies above it.
+  std::uint32_t written_through_ = 0;
   bool clear_ = true;  // nothing added since the set was made or cleared
   std::vector<std::uint64_t> words_;
 };

@@ -192,11 +192,15 @@ class ForbiddenMapFusion {
   std::vector<bool> hiding_;
   std::vector<bool> voting_;
   std::vector<CellLines> voting_lines_;  // per camera: suspicious or hidden, this part's
+  // Per camera, this part's: the set it votes with and the set of what it suspects (null: it
+  // does not vote). Voted on at the highest level any of them was written at (fold_to).
+  std::vector<CellLines*> vote_sets_;
+  std::vector<CellLines*> suspect_sets_;
   std::vector<std::span<const std::uint64_t>> camera_lines_;  // this part's vote per camera
   std::vector<std::uint64_t> seen_lines_;  // cells some camera suspects through this part
   // at_least_[k]: cells suspected by at least k + 1 cameras, a block at a time (or_at_least).
   std::vector<std::vector<std::uint64_t>> at_least_;
-  std::vector<std::uint64_t> critical_lines_;
+  CellLines critical_lines_;  // each part's vote at its level, folded before it is read
   std::vector<FeatureMask> robot_;
   std::vector<FeatureMask> obstacles_;
   std::vector<FeatureMask> hidden_;
