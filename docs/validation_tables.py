@@ -56,9 +56,12 @@ def script_commands(subfolder):
     return read_commands(os.path.join(subfolder, "commands.tsv"))
 
 
-def commands_footer(commands, seconds):
-    w("Commands (seconds on this machine, run beside other work): " + "; ".join(
-        "`" + commands[name] + "` (" + n(seconds[name]) + ")" for name in commands) + ".")
+def commands_footer(commands, seconds, beside_other_work=True, skip=()):
+    """The commands of a section and their seconds, all but those named in `skip`."""
+    w("Commands (seconds on this machine" + (", run beside other work" if beside_other_work
+                                            else "") + "): " + "; ".join(
+        "`" + commands[name] + "` (" + n(seconds[name]) + ")" for name in commands
+        if name not in skip) + ".")
     w("")
 
 
@@ -1027,6 +1030,28 @@ def build_time(build):
             f"static obstacles {stages['static_obstacles']:.0f} s)")
 
 
+def fine_grid_validation_table(read, default_label):
+    """The validation runs of docs/fine_grid_validation.sh (reports from `read`) as a table:
+    seed 7 at thresholds 2 and 3 on both grids, then seed 11 on the 6 cm grid. Returns that run."""
+    rows = []
+
+    def row(label, threshold, r):
+        c = causes(r)
+        rows.append([label, str(threshold), n(r["scenes"]), n(r["colliding"]), n(r["missed"]),
+                     n(r["unseen"]), pct(r["needless_stop_share"]), c[1], c[2],
+                     pct(r["forbidden_share"])])
+
+    for threshold in (2, 3):
+        row(default_label, threshold, read(f"default-validate-seed7-threshold-{threshold}"))
+        row("0.06 m", threshold, read(f"validate-seed7-threshold-{threshold}"))
+    big = read("validate-seed11")
+    row("0.06 m, seed 11", big["camera_threshold"], big)
+    w(table(["m_max", "threshold", "scenes", "colliding", "missed", "unseen", "needless stops",
+             "visual hull", "envelope", "forbidden"], rows))
+    w("")
+    return big
+
+
 def fine_grid_section():
     """The 6 cm grid (docs/fine_grid_validation.sh), when its reports are there."""
     fine = os.path.join(folder, "fine-grid")
@@ -1087,23 +1112,7 @@ def fine_grid_section():
                            key=lambda name: (list(BENCH_NOTES).index(name.split("-")[2]), name))
     ]))
     w("")
-    rows = []
-    for threshold in (2, 3):
-        for name, label in [(f"default-validate-seed7-threshold-{threshold}", "0.18 m (default)"),
-                            (f"validate-seed7-threshold-{threshold}", "0.06 m")]:
-            r = fine_report(name)
-            c = causes(r)
-            rows.append([label, str(threshold), n(r["scenes"]), n(r["colliding"]),
-                         n(r["missed"]), n(r["unseen"]), pct(r["needless_stop_share"]), c[1], c[2],
-                         pct(r["forbidden_share"])])
-    big = fine_report("validate-seed11")
-    c = causes(big)
-    rows.append(["0.06 m, seed 11", str(big["camera_threshold"]), n(big["scenes"]),
-                 n(big["colliding"]), n(big["missed"]), n(big["unseen"]),
-                 pct(big["needless_stop_share"]), c[1], c[2], pct(big["forbidden_share"])])
-    w(table(["m_max", "threshold", "scenes", "colliding", "missed", "unseen", "needless stops",
-             "visual hull", "envelope", "forbidden"], rows))
-    w("")
+    fine_grid_validation_table(fine_report, "0.18 m (default)")
     t2 = fine_report("validate-seed7-threshold-2")
     t3 = fine_report("validate-seed7-threshold-3")
     d2 = fine_report("default-validate-seed7-threshold-2")
@@ -1201,10 +1210,7 @@ def fine_grid_section():
           f"static obstacles {after['stage_s']['static_obstacles']:.0f} s. "
           "LUT-1 (projecting every cell's balls into every camera, per part) is the lever.")
         w("")
-    w("Commands (seconds on this machine): " + "; ".join(
-        "`" + fine_commands[name] + "` (" + n(fine_seconds[name]) + ")"
-        for name in fine_commands if name != "build") + ".")
-    w("")
+    commands_footer(fine_commands, fine_seconds, beside_other_work=False, skip=("build",))
     fine_grid_again_section()
 
 
@@ -1275,25 +1281,8 @@ def fine_grid_again_section():
          "0 degraded"],
     ]))
     w("")
-    rows = []
-    for threshold in (2, 3):
-        for name, label in [(f"default-validate-seed7-threshold-{threshold}", "0.18 m"),
-                            (f"validate-seed7-threshold-{threshold}", "0.06 m")]:
-            v = r(name)
-            c = causes(v)
-            rows.append([label, str(threshold), n(v["scenes"]), n(v["colliding"]), n(v["missed"]),
-                         n(v["unseen"]), pct(v["needless_stop_share"]), c[1], c[2],
-                         pct(v["forbidden_share"])])
-    big = r("validate-seed11")
-    c = causes(big)
-    rows.append(["0.06 m, seed 11", str(big["camera_threshold"]), n(big["scenes"]),
-                 n(big["colliding"]), n(big["missed"]), n(big["unseen"]),
-                 pct(big["needless_stop_share"]), c[1], c[2], pct(big["forbidden_share"])])
-    w(table(["m_max", "threshold", "scenes", "colliding", "missed", "unseen", "needless stops",
-             "visual hull", "envelope", "forbidden"], rows))
-    w("")
+    big = fine_grid_validation_table(r, "0.18 m")
     t3, d3 = r("validate-seed7-threshold-3"), r("default-validate-seed7-threshold-3")
-    served = [b["cell"]["served_fusion_p99_ms"] for b in [bench] + runs]
     every = [b["cell"]["fusion_p99_ms"] for b in [bench] + runs]
     slow = max([bench] + runs, key=lambda b: b["cell"]["served_fusion_p99_ms"])
     quick = [b for b in [bench] + runs if b is not slow]
@@ -1354,10 +1343,7 @@ def fine_grid_again_section():
       f"{2 * ((runs[0]['cell']['cells'] + 63) // 64) * 8 / 1e6:.2f} MB: on maps like these "
       "the blocks do not compress).")
     w("")
-    w("Commands (seconds on this machine): " + "; ".join(
-        "`" + again_commands[name] + "` (" + n(again_seconds[name]) + ")"
-        for name in again_commands if name != "build") + ".")
-    w("")
+    commands_footer(again_commands, again_seconds, beside_other_work=False, skip=("build",))
 
 
 def needless_columns(r):

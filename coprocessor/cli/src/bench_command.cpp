@@ -1,6 +1,5 @@
 #include "safecell/cli/bench_command.hpp"
 
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -18,6 +17,7 @@
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/errors/input_error.hpp"
+#include "scratch_path.hpp"
 
 namespace safecell {
 namespace {
@@ -92,30 +92,13 @@ nlohmann::ordered_json run_controller_bench(const std::filesystem::path& maps,
   return nlohmann::ordered_json::parse(output.substr(json_start + 1));
 }
 
-// A file of maps in the temporary folder, removed with this object.
-class TemporaryMaps {
- public:
-  explicit TemporaryMaps(const std::string& what)
-      : path_(std::filesystem::temp_directory_path() /
-              ("safecell-" + what + "-maps-" + std::to_string(getpid()))) {}
-  TemporaryMaps(const TemporaryMaps&) = delete;
-  TemporaryMaps& operator=(const TemporaryMaps&) = delete;
-  ~TemporaryMaps() {
-    std::error_code ignored;
-    std::filesystem::remove(path_, ignored);
-  }
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 #endif
 
 // The controller's figures: its benchmark program on the demo's maps. Empty when the program is
 // not built (a coprocessor-only build); a failure of the program is an error.
 nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
 #ifdef SAFECELL_CONTROLLER_BENCH
-  const TemporaryMaps maps("demo");
+  const ScratchPath maps("demo-maps");
   write_default_cell_demo_maps(maps.path().string());
   progress << "running the controller's benchmarks (safecell-controller-bench)...\n" << std::flush;
   return run_controller_bench(
@@ -132,7 +115,7 @@ nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
 CellFusionFigures cell_figures(const std::string& cell_path, const BenchOptions& options,
                                std::ostream& progress) {
 #ifdef SAFECELL_CONTROLLER_BENCH
-  const TemporaryMaps maps("cell");
+  const ScratchPath maps("cell-maps");
   CellFusionFigures figures = measure_cell_fusion(cell_path, options.lut_cache, options.frames,
                                                   maps.path().string(), progress);
   progress << "the controller's map store holding the maps (safecell-controller-bench)...\n"

@@ -1,6 +1,5 @@
 #include "end_to_end_bench.hpp"
 
-#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include "safecell/closed_loop/replayed_frame_sets.hpp"
 #include "safecell/sim/demo_scenario.hpp"
 #include "safecell/validation/percentile.hpp"
+#include "scratch_path.hpp"
 #include "simulated_sensing.hpp"
 
 namespace safecell {
@@ -18,17 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kFps = 30.0;
-
-// A scratch folder for the controller's file and log, removed with the object.
-struct ScratchFolder {
-  std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("safecell-e2e-" + std::to_string(getpid()));
-  ScratchFolder() { std::filesystem::create_directories(path); }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
 
 // The person of the demo walking through the cell past the still robot, rendered in advance.
 std::vector<std::vector<cv::Mat>> rendered_sets(SimulatedSensing& sensing,
@@ -51,12 +40,14 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
   // still robot, which would forbid those maps whole; the check's own time is in fusion_ms
   // and in the protective_separation benchmark.
   SimulatedSensing sensing("", "", 1, log, CellOverrides{0, true});
-  const ScratchFolder folder;
+  // The controller's file and log.
+  const ScratchPath folder("e2e");
+  std::filesystem::create_directories(folder.path());
   ControllerSetup setup = controller_setup_of(sensing.cell, sensing.grid);
   setup.start_rad = demo_robot_at(sensing.grid, 0.0);  // held there: no task
   ControllerSession session(
       sensing.cell, sensing.grid, sensing.pipeline, sensing.luts.set.fingerprint, setup,
-      real_time_session(program, folder.path, kFps, sensing.fusion.sync_error_s,
+      real_time_session(program, folder.path(), kFps, sensing.fusion.sync_error_s,
                         sensing.reference.frames),
       log);
   const std::uint64_t start_ns = steady_now_ns();

@@ -33,15 +33,14 @@ class CellLines {
   std::size_t add_strips(const std::uint8_t* begin, const std::uint8_t* end);
   // Folds the levels into the full grid (nothing to do when no strip went below it since).
   void fold();
-  // Folds the levels below `level` (1..level_count()) into it, no further: the set then lies
+  // Folds the levels below `level` (1 to the full grid's) into it, no further: the set then lies
   // wholly at that level, which level_lines() reads. A set whose strips all lie at a low level (a
   // robot part moved by the first joints only) is voted on there, a fraction of the full grid.
   // Precondition: written_through() <= level (std::logic_error otherwise).
   void fold_to(std::uint32_t level);
   // The highest level a bit was written at since the set was cleared (0: none); a fold to the
-  // full grid makes it level_count().
+  // full grid makes it the top level.
   [[nodiscard]] std::uint32_t written_through() const { return written_through_; }
-  [[nodiscard]] std::uint32_t level_count() const { return levels_.count; }
   // The lines of one level, as fold_to(level) leaves them.
   [[nodiscard]] std::span<const std::uint64_t> level_lines(std::uint32_t level) const;
   // The same, for the caller to OR bits into: they stand for those lines along every axis above
