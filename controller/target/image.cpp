@@ -18,7 +18,7 @@ namespace {
 
 // The default cell's grid (safecell cell info): 48 x 37 x 21 x 5 cells.
 constexpr CellIndex kCells = 186'480;
-constexpr MapStoreLayout kLayout = MapStoreLayout::of(kCells, default_pool_blocks(kCells));
+constexpr MapStoreLayout kLayout = MapStoreLayout::of(kCells);
 
 GridSpec default_grid() {
   GridSpec spec;

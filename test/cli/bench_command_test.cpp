@@ -43,7 +43,7 @@ TEST(BenchCommand, CellFusionComparesTwoCellsOnTheSameFrames) {
   EXPECT_EQ(report["baseline"]["cells"], report["cell"]["cells"]);
   EXPECT_GT(report["fusion_p99_ratio"].get<double>(), 0.0);
   // The controller's map store holding every 10th fused map: one block per 512 cells, some of
-  // them mixed (the person walks in), and the default pool of a small grid holds them exactly.
+  // them mixed (the person walks in), and the default store holds each bit for bit.
   const auto& cell_figures = report["cell"];
   EXPECT_EQ(cell_figures["map_store_maps"].get<int>(), 4);
   EXPECT_EQ(cell_figures["map_store_blocks"].get<double>(),
@@ -52,6 +52,7 @@ TEST(BenchCommand, CellFusionComparesTwoCellsOnTheSameFrames) {
   EXPECT_LE(cell_figures["map_store_mixed_blocks_max"].get<double>(),
             cell_figures["map_store_blocks"].get<double>());
   EXPECT_EQ(cell_figures["map_store_degraded_blocks_max"].get<double>(), 0.0);
+  EXPECT_EQ(cell_figures["map_store_inexact_maps"].get<double>(), 0.0);
   // Room for the mixed blocks it held, 512 bits each.
   EXPECT_GT(cell_figures["map_store_bytes"].get<double>(),
             cell_figures["map_store_mixed_blocks_max"].get<double>() * 64.0);

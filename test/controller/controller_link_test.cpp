@@ -40,8 +40,7 @@ using test::MemoryPort;
 class ControllerLinkTest : public ::testing::Test {
  protected:
   ControllerLinkTest()
-      : store_(MapStoreLayout::of(kCells, default_pool_blocks(kCells))),
-        link_(config(), port_, store_.store()) {}
+      : store_(MapStoreLayout::of(kCells)), link_(config(), port_, store_.store()) {}
 
   static ControllerLinkConfig config() {
     ControllerLinkConfig c;

@@ -18,7 +18,7 @@ struct CycleRig {
            const SafetyCycleConfig& config, LinkPort& port, std::uint64_t lut_fingerprint)
       : robot(robot_config),
         clock(robot),
-        store(MapStoreLayout::of(grid.cell_count(), default_pool_blocks(grid.cell_count()))),
+        store(MapStoreLayout::of(grid.cell_count())),
         link(link_config(grid, lut_fingerprint), port, store.store()),
         watchdog({3'000'000, 5'000'000, 2'000'000}),
         cycle(grid, with_stop_model(config, robot_config), robot, clock, link, store.store(),

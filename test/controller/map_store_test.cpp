@@ -1,6 +1,7 @@
-// The controller's compressed map store against the dense reference (MapAssembler, which keeps
-// every bit): the same chunks give the same outcomes and the same maps; with a pool too small
-// for the map, the store holds a superset (only forbidden cells added, counted), never less.
+// The controller's map store, dense and compressed, against the dense reference (MapAssembler,
+// which keeps every bit): the same chunks give the same outcomes and the same maps; with a pool
+// too small for the map, the compressed store holds a superset (only forbidden cells added,
+// counted), never less.
 
 #include "safecell/controller/map_store.hpp"
 
@@ -66,18 +67,28 @@ Words changed(const Words& map, CellIndex cells, std::mt19937_64& rng) {
 }
 
 TEST(MapStore, StartsWithNoMapAndEverythingForbidden) {
-  const StoreReceiver receiver(5000, 8);
-  EXPECT_EQ(receiver.store().version(), 0u);
-  EXPECT_EQ(cell_bits::count(receiver.held().data(), 0, 5000), 5000u);
+  for (const MapStoreLayout& layout :
+       {MapStoreLayout::of(5000), MapStoreLayout::compressed(5000, 8)}) {
+    const StoreReceiver receiver(layout);
+    EXPECT_EQ(receiver.store().version(), 0u);
+    EXPECT_EQ(cell_bits::count(receiver.held().data(), 0, 5000), 5000u);
+    EXPECT_EQ(receiver.store().pool_blocks_used(), 0u);
+  }
 }
 
-TEST(MapStore, LayoutIsSizedFromTheGridAndPool) {
-  const MapStoreLayout layout = MapStoreLayout::of(186480, 200);
-  EXPECT_EQ(layout.blocks, 365u);  // 186480 / 512 rounded up
-  EXPECT_EQ(layout.bytes(), 365u * 28 + 200u * 68);
-  EXPECT_EQ(default_pool_blocks(186480), 730u);
-  EXPECT_EQ(default_pool_blocks(16'000'000), 62500u);  // two maps of 31,250 blocks
-  EXPECT_EQ(default_pool_blocks(100), 16u);
+TEST(MapStore, LayoutIsSizedFromTheGridAndTheForm) {
+  const MapStoreLayout compressed = MapStoreLayout::compressed(186480, 200);
+  EXPECT_EQ(compressed.blocks, 365u);  // 186480 / 512 rounded up
+  EXPECT_FALSE(compressed.dense);
+  EXPECT_EQ(compressed.bytes(), 365u * 28 + 200u * 68);
+  // The default: two sides of whole blocks and a bit per block, 128 bytes a block in all.
+  const MapStoreLayout dense = MapStoreLayout::of(186480);
+  EXPECT_TRUE(dense.dense);
+  EXPECT_EQ(dense.pool_blocks, 0u);
+  EXPECT_EQ(dense.bytes(), 2u * 365 * 64 + 6 * 8);
+  // The 6 cm grid: 32,156 blocks, 4.12 MB dense against 5.27 MB for a pool of two maps.
+  EXPECT_EQ(MapStoreLayout::of(16'463'480).bytes(), 2u * 32156 * 64 + 503 * 8);
+  EXPECT_EQ(MapStoreLayout::compressed(16'463'480, 2 * 32156).bytes(), 32156u * (28 + 2 * 68));
 }
 
 // Offers `chunk` as the controller's link does: accept(), then work() in slices of small random
@@ -106,18 +117,22 @@ MapOffer offer_in_slices(StoreReceiver& receiver, MapStore& store, const SentChu
 
 // The same stream of chunks, with faults, to the store and to the dense reference: equal outcomes
 // and equal maps after every chunk, while the pool has room. `sliced`: the store works in slices.
-void matches_the_dense_reference(bool sliced) {
+// `dense`: the store's dense form, else the compressed form with a pool of two maps.
+void matches_the_dense_reference(bool sliced, bool dense_form) {
   test::PropertyRun run(sliced ? 20 : 40);
   for (int i = 0; i < run.iterations(); ++i) {
     auto& rng = run.rng();
     const auto cells = static_cast<CellIndex>(1 + rng() % 60000);
     const std::size_t capacity = kMaxRunRecordBytes + rng() % 400;
-    StoreReceiver store(cells, store_blocks_for(cells) * 2);
+    StoreReceiver store(dense_form
+                            ? MapStoreLayout::of(cells)
+                            : MapStoreLayout::compressed(cells, store_blocks_for(cells) * 2));
     DenseReceiver dense(cells);
     Words sent = blocky_map(cells, rng);
     std::uint64_t acknowledged = 0;
     std::ostringstream input;
-    input << "cells " << cells << ", capacity " << capacity << "; updates:";
+    input << (dense_form ? "dense" : "compressed") << ", cells " << cells << ", capacity "
+          << capacity << "; updates:";
     for (std::uint64_t version = 1; version < 12; ++version) {
       const bool keyframe = acknowledged == 0 || rng() % 5 == 0;
       const Words next = keyframe ? blocky_map(cells, rng) : changed(sent, cells, rng);
@@ -154,9 +169,15 @@ void matches_the_dense_reference(bool sliced) {
   }
 }
 
-TEST(MapStore, MatchesTheDenseReferenceUnderFaults) { matches_the_dense_reference(false); }
+TEST(MapStore, MatchesTheDenseReferenceUnderFaults) { matches_the_dense_reference(false, true); }
 TEST(MapStore, WorkInSlicesMatchesTheDenseReferenceAndNeverShowsHalfAnUpdate) {
-  matches_the_dense_reference(true);
+  matches_the_dense_reference(true, true);
+}
+TEST(MapStore, CompressedMatchesTheDenseReferenceUnderFaults) {
+  matches_the_dense_reference(false, false);
+}
+TEST(MapStore, CompressedWorkInSlicesMatchesTheDenseReferenceAndNeverShowsHalfAnUpdate) {
+  matches_the_dense_reference(true, false);
 }
 
 TEST(MapStore, AnUpdateShowsOnlyWhenWholeAndVerified) {
@@ -242,7 +263,7 @@ TEST(MapStore, APoolThatOverflowsOnlyAddsForbiddenCells) {
       if (store.store().degraded_blocks() == 0) {
         ASSERT_EQ(store.held(), next) << input.str();
       }
-      ASSERT_LE(store.store().mixed_blocks(), pool) << input.str();
+      ASSERT_LE(store.store().pool_blocks_used(), pool) << input.str();
       sent = next;
       acknowledged = version;
     }
@@ -260,7 +281,7 @@ TEST(MapStore, CountsItsDegradedBlocks) {
   StoreReceiver store(kCells, 4);
   ASSERT_EQ(store.offer_all(update_of(nullptr, 0, map, 1, kCells, 200)).outcome,
             MapOutcome::kApplied);
-  EXPECT_EQ(store.store().mixed_blocks(), 4u);
+  EXPECT_EQ(store.store().pool_blocks_used(), 4u);
   EXPECT_EQ(store.store().degraded_blocks(), 6u);
   EXPECT_EQ(store.store().pool_overflows(), 6u);
   // 4 blocks exact (one cell each), 6 blocks of 512 all forbidden.

@@ -41,7 +41,7 @@ class SafetyCycleTest : public ::testing::Test {
       : grid_(CspaceGrid::create(spec()).value()),
         robot_(robot_config()),
         clock_(robot_),
-        store_(MapStoreLayout::of(grid_.cell_count(), default_pool_blocks(grid_.cell_count()))),
+        store_(MapStoreLayout::of(grid_.cell_count())),
         link_(link_config(), port_, store_.store()),
         watchdog_({3 * kMs, 5 * kMs, 2 * kMs}),
         cycle_(grid_, cycle_config(min_cameras, look_ahead_off), robot_, clock_, link_,

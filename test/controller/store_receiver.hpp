@@ -12,8 +12,10 @@ namespace safecell {
 
 class StoreReceiver {
  public:
+  explicit StoreReceiver(const MapStoreLayout& layout) : cells_(layout.cell_count), host_(layout) {}
+  // The compressed form with a pool of `pool_blocks`.
   StoreReceiver(CellIndex cells, std::uint32_t pool_blocks)
-      : cells_(cells), host_(MapStoreLayout::of(cells, pool_blocks)) {}
+      : StoreReceiver(MapStoreLayout::compressed(cells, pool_blocks)) {}
   MapOffer offer(const test::SentChunk& chunk, std::uint64_t capture_ns = 1) {
     return host_.store().offer(chunk.header, chunk.runs.data(), chunk.runs.size(), capture_ns);
   }

@@ -1,8 +1,9 @@
 // Map chunks with any header and any run list, offered to the dense assembler and to the
-// controller's compressed store (a pool of 3 blocks, so it overflows), each holding a map: never a
-// read or write outside their storage; a refused chunk leaves the held map as it was; an applied
-// update's map has the hash it claimed; the store never holds a cell free that the dense one
-// holds forbidden for the same version.
+// controller's store in both forms (dense; compressed with a pool of 3 blocks, so it overflows),
+// each holding a map: never a read or write outside their storage; a refused chunk leaves the
+// held map as it was; an applied update's map has the hash it claimed; for the same version, the
+// dense store holds the assembler's map and the compressed one never holds a cell free that the
+// assembler holds forbidden.
 //
 // Input: a sequence of chunks, each  [kind 1][version 1][base 1][index 1][count 1][first 2]
 // [end 2][hash selector 1, its upper 7 bits the store's slice budget (0: whole)][run bytes n 1]
@@ -23,7 +24,36 @@ namespace {
 constexpr CellIndex kCells = 3000;
 constexpr std::uint32_t kWords = cell_bits::words_for(kCells);
 constexpr std::uint32_t kBlocks = map_hash_blocks(kCells);
-constexpr MapStoreLayout kStoreLayout = MapStoreLayout::of(kCells, 3);
+constexpr MapStoreLayout kCompressedLayout = MapStoreLayout::compressed(kCells, 3);
+constexpr MapStoreLayout kDenseLayout = MapStoreLayout::of(kCells);
+
+// Offers one chunk to `store` whole (slice 0) or in slices of that many work units, leaving the
+// upkeep after a swap or refusal to the next chunk, as the link does; checks that the held map
+// changes only with an applied update, to the version and hash it claimed. Returns the held map.
+void offer_and_check(MapStore& store, const MapChunkHeader& header, const std::uint8_t* runs,
+                     std::size_t runs_size, std::uint32_t slice, std::uint64_t* held) {
+  std::uint64_t before[kWords];
+  store.view().copy_dense(before);
+  const std::uint64_t version_before = store.version();
+  MapOffer offer;
+  if (slice == 0) {
+    offer = store.offer(header, runs, runs_size, 1);
+  } else {
+    offer = store.accept(header, runs, runs_size, 1);
+    while (offer.outcome == MapOutcome::kWorking) {
+      SAFECELL_ASSERT(store.version() == version_before);  // no half update shows
+      std::uint32_t budget = slice;
+      offer = store.work(budget);
+    }
+  }
+  store.view().copy_dense(held);
+  if (offer.outcome == MapOutcome::kApplied) {
+    SAFECELL_ASSERT(store.version() == header.map_version && store.hash() == header.map_hash);
+  } else {
+    SAFECELL_ASSERT(store.version() == version_before);
+    SAFECELL_ASSERT(std::memcmp(before, held, sizeof before) == 0);
+  }
+}
 
 }  // namespace
 
@@ -31,8 +61,10 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
   static std::uint64_t words[2][kWords];
   static std::uint64_t hashes[2][kBlocks];
   MapAssembler assembler({{words[0], words[1]}, {hashes[0], hashes[1]}}, kCells);
-  static StaticMapStoreMemory<kStoreLayout> memory;
-  MapStore store(kStoreLayout, memory.storage());
+  static StaticMapStoreMemory<kCompressedLayout> compressed_memory;
+  MapStore compressed(kCompressedLayout, compressed_memory.storage());
+  static StaticMapStoreMemory<kDenseLayout> dense_memory;
+  MapStore dense(kDenseLayout, dense_memory.storage());
   // A first map to hold: cells 100..199 forbidden, version 1.
   {
     std::uint64_t target[kWords] = {};
@@ -47,7 +79,8 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
     header.end_cell = kCells;
     SAFECELL_ASSERT(assembler.offer(header, runs, runs_size).outcome ==
                     MapAssembler::Outcome::kApplied);
-    SAFECELL_ASSERT(store.offer(header, runs, runs_size, 1).outcome == MapOutcome::kApplied);
+    SAFECELL_ASSERT(compressed.offer(header, runs, runs_size, 1).outcome == MapOutcome::kApplied);
+    SAFECELL_ASSERT(dense.offer(header, runs, runs_size, 1).outcome == MapOutcome::kApplied);
   }
   std::size_t at = 0;
   while (at + 11 <= size) {
@@ -68,24 +101,12 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
     std::uint64_t held_before[kWords];
     std::memcpy(held_before, assembler.map(), sizeof held_before);
     const std::uint64_t version_before = assembler.version();
-    std::uint64_t store_before[kWords];
-    store.view().copy_dense(store_before);
-    const std::uint64_t store_version_before = store.version();
     const MapAssembler::Offer offer = assembler.offer(header, data + at, runs_size);
-    // The store takes the chunk whole, or (hash selector's upper bits) in slices of that many
-    // work units, leaving the upkeep after a swap or refusal to the next chunk, as the link does.
     const std::uint32_t slice = field[9] >> 1U;
-    MapOffer store_offer;
-    if (slice == 0) {
-      store_offer = store.offer(header, data + at, runs_size, 1);
-    } else {
-      store_offer = store.accept(header, data + at, runs_size, 1);
-      while (store_offer.outcome == MapOutcome::kWorking) {
-        SAFECELL_ASSERT(store.version() == store_version_before);  // no half update shows
-        std::uint32_t budget = slice;
-        store_offer = store.work(budget);
-      }
-    }
+    std::uint64_t compressed_now[kWords];
+    offer_and_check(compressed, header, data + at, runs_size, slice, compressed_now);
+    std::uint64_t dense_now[kWords];
+    offer_and_check(dense, header, data + at, runs_size, slice, dense_now);
     at += runs_size;
     if (offer.outcome == MapAssembler::Outcome::kApplied) {
       SAFECELL_ASSERT(assembler.version() == header.map_version);
@@ -94,18 +115,13 @@ int map_chunk_apply(const std::uint8_t* data, std::size_t size) {
       SAFECELL_ASSERT(assembler.version() == version_before);
       SAFECELL_ASSERT(std::memcmp(held_before, assembler.map(), sizeof held_before) == 0);
     }
-    std::uint64_t store_now[kWords];
-    store.view().copy_dense(store_now);
-    if (store_offer.outcome == MapOutcome::kApplied) {
-      SAFECELL_ASSERT(store.version() == header.map_version && store.hash() == header.map_hash);
-    } else {
-      SAFECELL_ASSERT(store.version() == store_version_before);
-      SAFECELL_ASSERT(std::memcmp(store_before, store_now, sizeof store_now) == 0);
-    }
-    if (store.version() == assembler.version()) {
+    if (compressed.version() == assembler.version()) {
       for (std::uint32_t w = 0; w < kWords; ++w) {
-        SAFECELL_ASSERT((assembler.map()[w] & ~store_now[w]) == 0);
+        SAFECELL_ASSERT((assembler.map()[w] & ~compressed_now[w]) == 0);
       }
+    }
+    if (dense.version() == assembler.version()) {
+      SAFECELL_ASSERT(std::memcmp(assembler.map(), dense_now, sizeof dense_now) == 0);
     }
     // Bits past the last cell stay zero.
     SAFECELL_ASSERT((assembler.map()[kWords - 1] >> (kCells % 64)) == 0);

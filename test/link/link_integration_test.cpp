@@ -97,7 +97,7 @@ class ControllerSide {
  public:
   ControllerSide(const CspaceGrid& grid, const ControllerLinkConfig& config)
       : cells_(grid.cell_count()),
-        store_(MapStoreLayout::of(cells_, default_pool_blocks(cells_))),
+        store_(MapStoreLayout::of(cells_)),
         port_({"127.0.0.1", 0}, {"127.0.0.1", 9}),
         naive_(cells_),
         tapped_(port_, naive_),

@@ -16,7 +16,8 @@
 //                      unit of MapStore work (map_store.hpp), to size map_work_per_poll
 //   planner            GridPlanner::plan between free cells of the maps (seeded pairs)
 //   map_store_memory   the store's bytes for the grid and, with m_max = 6 cm, the ~14 M-cell
-//                      grid, with the mixed blocks the maps need (upsampled to the fine grid)
+//                      grid; the maps (upsampled to the fine grid) held one after the other,
+//                      each checked bit for bit (inexact_maps), with their mixed blocks
 // Maps: --maps FILE (map_sequence_file.hpp; `safecell bench` passes the demo's maps) or, without
 // it, synthetic maps on the default cell's grid (a region sweeping through C-space).
 // --json prints one JSON object of the named figures after the benchmark table.
@@ -164,7 +165,7 @@ void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced
   const MapSequence& sequence = maps();
   const CspaceGrid grid = CspaceGrid::create(sequence.grid).value();
   const CellIndex cells = grid.cell_count();
-  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
+  HostMapStore store(MapStoreLayout::of(cells));
   QueuePort port;
   VirtualClock clock;
   ControllerLinkConfig link_config;
@@ -320,7 +321,7 @@ void controller_cycle_every_delta(benchmark::State& state) {
 void controller_cycle_unsliced(benchmark::State& state) { controller_cycle_with(state, 8, false); }
 
 void delta_apply_on(benchmark::State& state, const std::vector<Words>& sequence, CellIndex cells) {
-  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
+  HostMapStore store(MapStoreLayout::of(cells));
   const SentDelta first = delta_of(sequence.front(), 0, sequence.front(), 1, cells, true);
   for (std::size_t c = 0; c < first.headers.size(); ++c) {
     (void)store.store().offer(first.headers[c], first.runs[c].data(), first.runs[c].size(), 1);
@@ -373,7 +374,7 @@ void map_work_costs(benchmark::State& state) {
   for (CellIndex b = 0; b < 256; ++b) {
     cell_bits::set_range(spread.data(), b * kStoreBlockCells, (b + 1) * kStoreBlockCells - 1);
   }
-  HostMapStore store(MapStoreLayout::of(kCells, default_pool_blocks(kCells)));
+  HostMapStore store(MapStoreLayout::of(kCells));
   const SentDelta key = delta_of(empty, 0, empty, 1, kCells, true);
   (void)store.store().offer(key.headers[0], key.runs[0].data(), key.runs[0].size(), 1);
   std::uint64_t version = 1;
@@ -416,7 +417,7 @@ void planner(benchmark::State& state) {
   const MapSequence& sequence = maps();
   const CspaceGrid grid = CspaceGrid::create(sequence.grid).value();
   const CellIndex cells = grid.cell_count();
-  HostMapStore store(MapStoreLayout::of(cells, default_pool_blocks(cells)));
+  HostMapStore store(MapStoreLayout::of(cells));
   const SentDelta key = delta_of(sequence.maps.back(), 0, sequence.maps.back(), 1, cells, true);
   for (std::size_t c = 0; c < key.headers.size(); ++c) {
     (void)store.store().offer(key.headers[c], key.runs[c].data(), key.runs[c].size(), 1);
@@ -482,19 +483,44 @@ std::vector<Words> upsampled(const MapSequence& sequence, const CspaceGrid& coar
   return maps;
 }
 
-// Holds each map as a keyframe and reports the largest number of mixed and degraded blocks.
-void hold_all(const std::vector<Words>& sequence, CellIndex cells, std::uint32_t pool,
-              double& mixed, double& degraded) {
-  HostMapStore store(MapStoreLayout::of(cells, pool));
+// What a store of the default layout did with a sequence of maps.
+struct HeldMaps {
+  double mixed_blocks_max = 0;
+  double degraded_blocks_max = 0;
+  double inexact_maps = 0;  // not applied, or not held bit for bit as sent
+};
+
+// The blocks of a map neither all free nor all forbidden.
+std::uint32_t mixed_blocks(const Words& map, CellIndex cells) {
+  std::uint32_t mixed = 0;
+  for (CellIndex first = 0; first < cells; first += kStoreBlockCells) {
+    const CellIndex end = std::min<CellIndex>(cells, first + kStoreBlockCells);
+    const std::uint64_t set = cell_bits::count(map.data(), first, end);
+    if (set != 0 && set != end - first) ++mixed;
+  }
+  return mixed;
+}
+
+// Offers each map as a keyframe while the one before is held, and checks the store then holds it
+// exactly (against the map itself, as a dense bitmap).
+HeldMaps hold_all(const std::vector<Words>& sequence, CellIndex cells) {
+  HostMapStore store(MapStoreLayout::of(cells));
+  HeldMaps held;
+  Words words(cell_bits::words_for(cells));
   std::uint64_t version = 0;
   for (const Words& map : sequence) {
     const SentDelta key = delta_of(map, 0, map, ++version, cells, true);
     for (std::size_t c = 0; c < key.headers.size(); ++c) {
       (void)store.store().offer(key.headers[c], key.runs[c].data(), key.runs[c].size(), 1);
     }
-    mixed = std::max(mixed, static_cast<double>(store.store().mixed_blocks()));
-    degraded = std::max(degraded, static_cast<double>(store.store().degraded_blocks()));
+    store.store().view().copy_dense(words.data());
+    if (store.store().version() != version || words != map) held.inexact_maps += 1;
+    held.mixed_blocks_max =
+        std::max(held.mixed_blocks_max, static_cast<double>(mixed_blocks(map, cells)));
+    held.degraded_blocks_max =
+        std::max(held.degraded_blocks_max, static_cast<double>(store.store().degraded_blocks()));
   }
+  return held;
 }
 
 GridSpec fine_grid(const GridSpec& spec) {
@@ -520,35 +546,37 @@ void map_store_memory(benchmark::State& state) {
   const MapSequence& sequence = maps();
   const CellIndex cells = sequence.cell_count;
   const CspaceGrid fine = CspaceGrid::create(fine_grid(sequence.grid)).value();
-  double mixed = 0;
-  double degraded = 0;
-  double fine_mixed = 0;
-  double fine_degraded = 0;
+  HeldMaps held;
+  HeldMaps fine_held;
   while (state.KeepRunning()) {
-    mixed = degraded = fine_mixed = fine_degraded = 0;
-    hold_all(sequence.maps, cells, default_pool_blocks(cells), mixed, degraded);
-    if (!quick()) {
-      hold_all(fine_maps(), fine.cell_count(), default_pool_blocks(fine.cell_count()), fine_mixed,
-               fine_degraded);
-    }
+    held = hold_all(sequence.maps, cells);
+    if (!quick()) fine_held = hold_all(fine_maps(), fine.cell_count());
   }
-  const MapStoreLayout layout = MapStoreLayout::of(cells, default_pool_blocks(cells));
-  const MapStoreLayout fine_layout =
-      MapStoreLayout::of(fine.cell_count(), default_pool_blocks(fine.cell_count()));
+  // The compressed form with room for two maps of mixed blocks (the pool that never degrades),
+  // for comparison.
+  const auto compressed_bytes = [](CellIndex count) {
+    return static_cast<double>(
+        MapStoreLayout::compressed(count, 2 * store_blocks_for(count)).bytes());
+  };
   state.counters["cells"] = cells;
-  state.counters["map_store_bytes"] = static_cast<double>(layout.bytes());
+  state.counters["map_store_bytes"] = static_cast<double>(MapStoreLayout::of(cells).bytes());
+  state.counters["compressed_bytes"] = compressed_bytes(cells);
   state.counters["dense_double_buffer_bytes"] = 2.0 * cell_bits::words_for(cells) * 8;
-  state.counters["blocks"] = layout.blocks;
-  state.counters["mixed_blocks_max"] = mixed;
-  state.counters["degraded_blocks_max"] = degraded;
+  state.counters["blocks"] = store_blocks_for(cells);
+  state.counters["mixed_blocks_max"] = held.mixed_blocks_max;
+  state.counters["degraded_blocks_max"] = held.degraded_blocks_max;
+  state.counters["inexact_maps"] = held.inexact_maps;
   if (quick()) return;
   state.counters["fine_cells"] = fine.cell_count();
-  state.counters["fine_map_store_bytes"] = static_cast<double>(fine_layout.bytes());
+  state.counters["fine_map_store_bytes"] =
+      static_cast<double>(MapStoreLayout::of(fine.cell_count()).bytes());
+  state.counters["fine_compressed_bytes"] = compressed_bytes(fine.cell_count());
   state.counters["fine_dense_double_buffer_bytes"] =
       2.0 * cell_bits::words_for(fine.cell_count()) * 8;
-  state.counters["fine_blocks"] = fine_layout.blocks;
-  state.counters["fine_mixed_blocks_max"] = fine_mixed;
-  state.counters["fine_degraded_blocks_max"] = fine_degraded;
+  state.counters["fine_blocks"] = store_blocks_for(fine.cell_count());
+  state.counters["fine_mixed_blocks_max"] = fine_held.mixed_blocks_max;
+  state.counters["fine_degraded_blocks_max"] = fine_held.degraded_blocks_max;
+  state.counters["fine_inexact_maps"] = fine_held.inexact_maps;
 }
 
 void delta_apply_fine(benchmark::State& state) {
@@ -673,12 +701,16 @@ int main(int argc, char** argv) {
         {"map_store_mixed_blocks_max", "map_store_memory.mixed_blocks_max"},
         {"map_store_blocks", "map_store_memory.blocks"},
         {"map_store_degraded_blocks_max", "map_store_memory.degraded_blocks_max"},
+        {"map_store_inexact_maps", "map_store_memory.inexact_maps"},
+        {"map_store_compressed_bytes", "map_store_memory.compressed_bytes"},
         {"map_store_14m_cells", "map_store_memory.fine_cells"},
         {"map_store_14m_bytes", "map_store_memory.fine_map_store_bytes"},
         {"map_store_14m_dense_bytes", "map_store_memory.fine_dense_double_buffer_bytes"},
         {"map_store_14m_blocks", "map_store_memory.fine_blocks"},
         {"map_store_14m_mixed_blocks_max", "map_store_memory.fine_mixed_blocks_max"},
         {"map_store_14m_degraded_blocks_max", "map_store_memory.fine_degraded_blocks_max"},
+        {"map_store_14m_inexact_maps", "map_store_memory.fine_inexact_maps"},
+        {"map_store_14m_compressed_bytes", "map_store_memory.fine_compressed_bytes"},
     };
     std::printf("\n{");
     bool first = true;

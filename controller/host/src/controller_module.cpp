@@ -70,9 +70,9 @@ const char* to_string(TaskOutcome outcome) noexcept {
 struct ControllerModule::Parts {
   Parts(const ControllerConfig& config, ModuleTime time)
       : grid(grid_of(config)),
-        store(MapStoreLayout::of(grid.cell_count(), config.pool_blocks != 0
-                                                        ? config.pool_blocks
-                                                        : default_pool_blocks(grid.cell_count()))),
+        store(config.pool_blocks != 0
+                  ? MapStoreLayout::compressed(grid.cell_count(), config.pool_blocks)
+                  : MapStoreLayout::of(grid.cell_count())),
         port(config.link.listen, config.link.coprocessor),
         link(link_config(config, grid), port, store.store()),
         robot(config.robot),

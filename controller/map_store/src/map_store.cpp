@@ -1,5 +1,7 @@
 #include "safecell/controller/map_store.hpp"
 
+#include <bit>
+
 #include "safecell/base/assert.hpp"
 #include "safecell/cspace/run_coding.hpp"
 
@@ -9,11 +11,16 @@ static_assert(kMapHashBlockCells == kStoreBlockCells, "the store hashes the bloc
 MapStore::MapStore(const MapStoreLayout& layout, const MapStoreStorage& storage) noexcept
     : layout_(layout), storage_(storage) {
   SAFECELL_ASSERT(layout.cell_count > 0 && layout.blocks == store_blocks_for(layout.cell_count));
-  SAFECELL_ASSERT(storage.slots[0] != nullptr && storage.slots[1] != nullptr &&
-                  storage.changed_blocks != nullptr && storage.changed_hashes != nullptr &&
-                  storage.block_hashes != nullptr);
-  SAFECELL_ASSERT(layout.pool_blocks == 0 ||
-                  (storage.pool != nullptr && storage.free_blocks != nullptr));
+  if (layout.dense) {
+    SAFECELL_ASSERT(layout.pool_blocks == 0 && storage.sides[0] != nullptr &&
+                    storage.sides[1] != nullptr && storage.changed_bits != nullptr);
+  } else {
+    SAFECELL_ASSERT(storage.slots[0] != nullptr && storage.slots[1] != nullptr &&
+                    storage.changed_blocks != nullptr && storage.changed_hashes != nullptr &&
+                    storage.block_hashes != nullptr);
+    SAFECELL_ASSERT(layout.pool_blocks == 0 ||
+                    (storage.pool != nullptr && storage.free_blocks != nullptr));
+  }
   reset();
 }
 
@@ -22,12 +29,21 @@ void MapStore::reset() noexcept {
   combined_ = 0;
   std::uint64_t words[kStoreBlockWords];
   for (std::uint32_t b = 0; b < layout_.blocks; ++b) {
+    for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) words[w] = valid_bits(b, w);
+    const std::uint64_t hash = block_hash(b, words);
+    combined_ ^= hash;
+    if (layout_.dense) {
+      for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+        storage_.sides[0][b * kStoreBlockWords + w] = words[w];
+        storage_.sides[1][b * kStoreBlockWords + w] = words[w];
+      }
+      continue;
+    }
     storage_.slots[0][b] = kForbiddenSlot;
     storage_.slots[1][b] = kForbiddenSlot;
-    for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) words[w] = valid_bits(b, w);
-    storage_.block_hashes[b] = block_hash(b, words);
-    combined_ ^= storage_.block_hashes[b];
+    storage_.block_hashes[b] = hash;
   }
+  for (std::size_t w = 0; w < layout_.changed_bits_words(); ++w) storage_.changed_bits[w] = 0;
   free_count_ = 0;
   for (std::uint32_t p = layout_.pool_blocks; p > 0; --p)
     storage_.free_blocks[free_count_++] = p - 1;
@@ -120,6 +136,10 @@ void MapStore::start_chunk() noexcept {
 }
 
 MapOffer MapStore::level_step() noexcept {
+  if (layout_.dense) {
+    if (!level_dense()) make_idle();
+    return {MapOutcome::kWorking, MapRefusal::kNone};
+  }
   // One changed block: the working table takes the held table's slot again, and the pool block
   // the working table had there is free (after a swap: the old map's; after a refusal: the
   // update's).
@@ -137,10 +157,32 @@ MapOffer MapStore::level_step() noexcept {
   return {MapOutcome::kWorking, MapRefusal::kNone};
 }
 
+bool MapStore::level_dense() noexcept {
+  // One word of the changed blocks' bitset passed, or one changed block copied from the held side
+  // to the working side (after a swap: the new map's words; after a refusal: the held map's
+  // again). False when every changed block is level (and the bitset all zeros again).
+  // (The bitset holds changed_count_ - level_next_ set bits, so the scan ends within it.)
+  if (level_next_ == changed_count_ || level_word_ >= layout_.changed_bits_words()) return false;
+  std::uint64_t& bits = storage_.changed_bits[level_word_];
+  work_done_ += kWorkPerLevel;
+  if (bits == 0) {
+    ++level_word_;
+    return true;
+  }
+  const std::uint32_t block = level_word_ * 64 + static_cast<std::uint32_t>(std::countr_zero(bits));
+  bits &= bits - 1;
+  const std::uint64_t* from = storage_.sides[held_] + std::size_t{block} * kStoreBlockWords;
+  std::uint64_t* to = storage_.sides[1 - held_] + std::size_t{block} * kStoreBlockWords;
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) to[w] = from[w];
+  ++level_next_;
+  return true;
+}
+
 void MapStore::make_idle() noexcept {
   // The working table equals the held one: no update in it.
   changed_count_ = 0;
   level_next_ = 0;
+  level_word_ = 0;
   swapped_ = false;
   update_combined_ = combined_;
   update_degraded_ = degraded_blocks_;
@@ -262,6 +304,7 @@ void MapStore::abandon() noexcept {
   loaded_ = false;
   swapped_ = false;
   level_next_ = 0;
+  level_word_ = 0;
   phase_ = Phase::kLevel;
 }
 
@@ -275,6 +318,7 @@ void MapStore::swap_in(std::uint64_t version, std::uint64_t hash) noexcept {
   // The other table (the old map) is made level with the new one in the slices that follow.
   swapped_ = true;
   level_next_ = 0;
+  level_word_ = 0;
   loaded_ = false;
   phase_ = Phase::kLevel;
 }
@@ -296,6 +340,11 @@ void MapStore::finish_loaded() noexcept {
 }
 
 void MapStore::held_words(std::uint32_t block, std::uint64_t* out) noexcept {
+  if (layout_.dense) {
+    const std::uint64_t* held = storage_.sides[held_] + std::size_t{block} * kStoreBlockWords;
+    for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) out[w] = held[w];
+    return;
+  }
   const std::uint32_t slot = storage_.slots[held_][block];
   if (slot == kDegradedSlot) inexact_ = true;  // the exact words are gone
   for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
@@ -314,13 +363,17 @@ std::uint64_t MapStore::block_hash(std::uint32_t block, const std::uint64_t* wor
 }
 
 void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
+  work_done_ += kWorkPerBlock;
+  if (layout_.dense) {
+    store_dense(block, words);
+    return;
+  }
   bool none = true;
   bool all = true;
   for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
     none = none && words[w] == 0;
     all = all && words[w] == valid_bits(block, w);
   }
-  work_done_ += kWorkPerBlock;
   const std::uint64_t hash = block_hash(block, words);  // of the exact words, whatever is kept
   std::uint32_t* work = storage_.slots[1 - held_];
   const std::uint32_t old = work[block];  // the held map's: each block is stored once per update
@@ -350,6 +403,26 @@ void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
   storage_.changed_hashes[changed_count_] = hash;
   ++changed_count_;
   update_combined_ ^= storage_.block_hashes[block] ^ hash;
+}
+
+void MapStore::store_dense(std::uint32_t block, const std::uint64_t* words) noexcept {
+  // The working side's block is the held map's until this update stores it (once).
+  std::uint64_t* work = storage_.sides[1 - held_] + std::size_t{block} * kStoreBlockWords;
+  bool same = true;
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) same = same && work[w] == words[w];
+  if (same) return;
+  // The held words' hash and the new words' hash, as block_hash() computes each, in one loop: two
+  // independent chains of multiplies that the core overlaps (two calls took half as long again).
+  std::uint64_t old_hash = map_block_hash_seed(block);
+  std::uint64_t hash = old_hash;
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+    old_hash = map_hash_mix(old_hash ^ work[w]);
+    hash = map_hash_mix(hash ^ words[w]);
+    work[w] = words[w];
+  }
+  storage_.changed_bits[block / 64] |= std::uint64_t{1} << (block % 64);
+  ++changed_count_;
+  update_combined_ ^= old_hash ^ hash;
 }
 
 std::uint64_t MapStore::valid_bits(std::uint32_t block, std::uint32_t word) const noexcept {

@@ -111,7 +111,7 @@ nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
 }
 
 // `bench --cell`: the cell's fusion, and, where the controller's benchmark program is built, its
-// map store holding the cell's sampled maps (the store's default pool for the cell's grid).
+// map store holding the cell's sampled maps (the store's default layout for the cell's grid).
 CellFusionFigures cell_figures(const std::string& cell_path, const BenchOptions& options,
                                std::ostream& progress) {
 #ifdef SAFECELL_CONTROLLER_BENCH
@@ -128,6 +128,7 @@ CellFusionFigures cell_figures(const std::string& cell_path, const BenchOptions&
   figures.map_store_blocks = store.at("map_store_blocks").get<double>();
   figures.map_store_mixed_blocks_max = store.at("map_store_mixed_blocks_max").get<double>();
   figures.map_store_degraded_blocks_max = store.at("map_store_degraded_blocks_max").get<double>();
+  figures.map_store_inexact_maps = store.at("map_store_inexact_maps").get<double>();
   return figures;
 #else
   return measure_cell_fusion(cell_path, options.lut_cache, options.frames, "", progress);
@@ -156,7 +157,8 @@ nlohmann::ordered_json cell_fusion_json(const CellFusionFigures& figures) {
           {"map_store_bytes", figures.map_store_bytes},
           {"map_store_blocks", figures.map_store_blocks},
           {"map_store_mixed_blocks_max", figures.map_store_mixed_blocks_max},
-          {"map_store_degraded_blocks_max", figures.map_store_degraded_blocks_max}};
+          {"map_store_degraded_blocks_max", figures.map_store_degraded_blocks_max},
+          {"map_store_inexact_maps", figures.map_store_inexact_maps}};
 }
 
 // `bench --cell`: the cell's fusion against the default cell's, the same frames of the demo.
@@ -219,7 +221,9 @@ void run_cell_fusion_bench(const BenchOptions& options, std::ostream& out, std::
         << grouped(static_cast<std::uint64_t>(figures->map_store_mixed_blocks_max)) << " of "
         << grouped(static_cast<std::uint64_t>(figures->map_store_blocks))
         << " blocks mixed; degraded to forbidden: "
-        << grouped(static_cast<std::uint64_t>(figures->map_store_degraded_blocks_max)) << "\n";
+        << grouped(static_cast<std::uint64_t>(figures->map_store_degraded_blocks_max))
+        << "; maps not held bit for bit: "
+        << grouped(static_cast<std::uint64_t>(figures->map_store_inexact_maps)) << "\n";
   }
 }
 

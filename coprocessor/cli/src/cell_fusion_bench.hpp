@@ -37,13 +37,14 @@ struct CellFusionFigures {
   double features_p50_ms = 0.0;
   double forbidden_share_mean = 0.0;  // of the maps over the frames
   double forbidden_share_max = 0.0;
-  // The controller's map store (MapStoreLayout, default pool) holding the sampled maps, as
+  // The controller's map store (MapStoreLayout, default layout) holding the sampled maps, as
   // safecell-controller-bench reports it; map_store_maps 0: not measured.
   int map_store_maps = 0;
   double map_store_bytes = 0.0;
   double map_store_blocks = 0.0;
   double map_store_mixed_blocks_max = 0.0;
   double map_store_degraded_blocks_max = 0.0;  // held as forbidden: the pool was too small
+  double map_store_inexact_maps = 0.0;         // not applied, or not held bit for bit as sent
 };
 
 // Every how many frames a fused map is written for the map store's figures (30 of 300 frames: a

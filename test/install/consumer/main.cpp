@@ -45,7 +45,7 @@ GridSpec grid_spec() {
   return spec;
 }
 
-constexpr MapStoreLayout kLayout = MapStoreLayout::of(4096, 16);
+constexpr MapStoreLayout kLayout = MapStoreLayout::of(4096);
 StaticMapStoreMemory<kLayout> store_memory;
 
 }  // namespace
@@ -53,7 +53,7 @@ StaticMapStoreMemory<kLayout> store_memory;
 int main() {
   const CspaceGrid grid = CspaceGrid::create(grid_spec()).value();
   if (grid.cell_count() > kLayout.cell_count) return 3;
-  const MapStoreLayout layout = MapStoreLayout::of(grid.cell_count(), 16);
+  const MapStoreLayout layout = MapStoreLayout::of(grid.cell_count());
   MapStore store(layout, store_memory.storage());
   StillRobot robot;
   StepClock clock;

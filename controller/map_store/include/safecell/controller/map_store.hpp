@@ -1,30 +1,37 @@
 #pragma once
-// The controller's forbidden map, compressed, and how map updates reach it.
+// The controller's forbidden map, and how map updates reach it.
 //
-// The grid is cut into blocks of 512 cells (map_view.hpp). A block is free, forbidden, or mixed;
-// only mixed blocks take memory: 64 bytes each from a pool whose size is fixed at init. Two slot
-// tables make the double buffer: an update is written into the working table (blocks it changes
-// get fresh pool blocks; unchanged ones are shared with the held map), and the tables swap only
-// when the update is whole and its hash matches. A reader of view() never sees half an update.
+// The grid is cut into blocks of 512 cells (map_view.hpp), the unit of the map hash (map_hash.hpp:
+// one hash per block, the map hash their XOR) and of every change. The store is a double buffer:
+// an update is written into the working side (blocks it changes; unchanged ones stay as the held
+// map has them), and the sides swap only when the update is whole and its hash matches. A reader
+// of view() never sees half an update.
+//
+// Two forms, chosen by the layout:
+// - dense (the default): both sides hold every word of the grid. Real maps mix nearly every block
+//   (measured: 97 % of the default cell's blocks with the demo's maps, up to 99 % of the 6 cm
+//   grid's 32,156 with its own fused maps), so nothing smaller holds two of them exactly.
+// - compressed: a block is free, forbidden, or mixed; only mixed blocks take memory, 64 bytes each
+//   from a pool whose size is fixed at init, and two slot tables point into it (blocks an update
+//   does not change are shared with the held map). For a controller whose memory is smaller than
+//   a dense double buffer, or maps that are mostly whole free or forbidden blocks. When the pool
+//   has no room for a mixed block, the block is stored as forbidden ("degraded"): the map only
+//   gains forbidden cells, and the count says so. The hash still checks the exact content, so a
+//   keyframe always verifies; a delta that changes part of a degraded block has no exact base
+//   there and is refused (MapRefusal::kBaseInexact), so the link asks for a keyframe.
 //
 // Updates arrive as chunks (map_chunk.hpp) in grid order, so the store rebuilds each block's
-// exact words in a scratch buffer as the chunks stream past, hashes them (map_hash.hpp: one hash
-// per 512-cell block, the map hash their XOR) before storing, and then keeps them mixed, or all
-// free / all forbidden. When the pool has no room for a mixed block, the block is stored as
-// forbidden ("degraded"): the map only gains forbidden cells, and the count says so. The hash
-// still checks the exact content, so a keyframe always verifies; a delta that changes part of a
-// degraded block has no exact base there and is refused (MapRefusal::kBaseInexact), so the link
-// asks for a keyframe.
+// exact words in a scratch buffer as the chunks stream past and hashes them before storing.
 //
 // Work in slices. An update costs O(runs + blocks it changes) for a delta and O(blocks) for a
 // keyframe, more than a control cycle can spare on a fine grid. So the store does it in slices of
 // a bounded amount of work: accept() takes a chunk in O(1), and work(budget) goes on with it until
 // the budget is spent, across as many calls (control cycles) as it needs. The swap itself is O(1);
-// bringing the other slot table level with the new map afterwards (or undoing a refused update)
-// is more work for later slices. The map a reader sees changes only at the swap, so slicing the
-// work delays a map but never tears one; the map's measured age includes the delay.
+// bringing the other side level with the new map afterwards (or undoing a refused update) is more
+// work for later slices. The map a reader sees changes only at the swap, so slicing the work
+// delays a map but never tears one; the map's measured age includes the delay.
 //
-// Memory: the caller's (MapStoreStorage), sized by MapStoreLayout from the grid and the pool size;
+// Memory: the caller's (MapStoreStorage), sized by MapStoreLayout from the grid and the form;
 // nothing is allocated.
 // Thread context: one thread, the controller's cycle (which also polls the link); not
 // synchronised. No allocation, no recursion, bounded loops; reset() is O(blocks) (a new session,
@@ -43,54 +50,75 @@ namespace safecell {
 struct MapStoreLayout {
   CellIndex cell_count = 0;
   std::uint32_t blocks = 0;       // blocks of 512 cells (also the map hash's blocks)
-  std::uint32_t pool_blocks = 0;  // mixed blocks the pool holds (the held map's and an update's)
+  std::uint32_t pool_blocks = 0;  // compressed: mixed blocks the pool holds (both sides')
+  bool dense = false;
 
-  static constexpr MapStoreLayout of(CellIndex cell_count, std::uint32_t pool_blocks) noexcept {
-    return {cell_count, store_blocks_for(cell_count), pool_blocks};
+  // The default form for a grid: dense (see above; a compressed pool with room for two maps of
+  // mixed blocks takes 164 bytes per block against the dense form's 128).
+  static constexpr MapStoreLayout of(CellIndex cell_count) noexcept {
+    return {cell_count, store_blocks_for(cell_count), 0, true};
   }
+  // The compressed form with a pool of `pool_blocks` mixed blocks.
+  static constexpr MapStoreLayout compressed(CellIndex cell_count,
+                                             std::uint32_t pool_blocks) noexcept {
+    return {cell_count, store_blocks_for(cell_count), pool_blocks, false};
+  }
+  // The words of each side of the dense form: whole blocks.
+  constexpr std::size_t dense_words() const noexcept {
+    return dense ? std::size_t{blocks} * kStoreBlockWords : 0;
+  }
+  // The words of the dense form's bitset of changed blocks.
+  constexpr std::size_t changed_bits_words() const noexcept {
+    return dense ? (std::size_t{blocks} + 63) / 64 : 0;
+  }
+  // The blocks of each per-block array of the compressed form.
+  constexpr std::size_t table_blocks() const noexcept { return dense ? 0 : blocks; }
   // The bytes of all the arrays of MapStoreStorage.
   constexpr std::size_t bytes() const noexcept {
-    return std::size_t{blocks} * (4 * 3 + 8 * 2) +
+    return 2 * dense_words() * 8 + changed_bits_words() * 8 + table_blocks() * (4 * 3 + 8 * 2) +
            std::size_t{pool_blocks} * (kStoreBlockWords * 8 + 4);
   }
 };
 
-// The default pool: room for two whole maps of mixed blocks, the held map's and an update's, so
-// that no map is degraded. Real maps mix nearly all blocks: 97 % on the default cell's grid with
-// the demo's maps, and up to 99 % (31,972 of 32,156) on the 6 cm grid with its own fused maps
-// (`safecell bench --cell`), where a pool of one and a half blocks per grid block degraded up to
-// 12,176 blocks of a keyframe (and a delta that touches a degraded block is refused, so the link
-// asks for another keyframe). Compression does not pay on such maps; exactness does. A smaller
-// pool is an integrator's trade of memory against degraded (forbidden, counted) blocks.
-constexpr std::uint32_t default_pool_blocks(CellIndex cell_count) noexcept {
-  const std::uint32_t blocks = store_blocks_for(cell_count);
-  return blocks < 8 ? 16 : 2 * blocks;
-}
-
-// The arrays a MapStore works in, each of the size its comment names (layout fields).
+// The arrays a MapStore works in, each of the size its comment names (layout functions); the
+// arrays of the other form are null.
 struct MapStoreStorage {
-  std::uint32_t* slots[2];        // blocks each
+  // Dense.
+  std::uint64_t* sides[2];      // dense_words() each
+  std::uint64_t* changed_bits;  // changed_bits_words(): the blocks the update changed
+  // Compressed.
+  std::uint32_t* slots[2];        // table_blocks() each
   std::uint64_t* pool;            // pool_blocks * kStoreBlockWords
   std::uint32_t* free_blocks;     // pool_blocks
-  std::uint32_t* changed_blocks;  // blocks: the blocks the update being collected changed
-  std::uint64_t* changed_hashes;  // blocks: their new block hashes
-  std::uint64_t* block_hashes;    // blocks: the held map's block hashes
+  std::uint32_t* changed_blocks;  // table_blocks(): the blocks the update being collected changed
+  std::uint64_t* changed_hashes;  // table_blocks(): their new block hashes
+  std::uint64_t* block_hashes;    // table_blocks(): the held map's block hashes
 };
 
 // The arrays of a MapStore as static storage sized at compile time, for targets without a heap:
 // `static StaticMapStoreMemory<kLayout> memory;` (zero-initialised, in bss) then
-// `MapStore store(kLayout, memory.storage());`.
+// `MapStore store(kLayout, memory.storage());`. The other form's arrays take one element each.
 template <const MapStoreLayout& kLayout>
 struct StaticMapStoreMemory {
-  std::uint32_t slots[2][kLayout.blocks];
-  std::uint64_t pool[std::size_t{kLayout.pool_blocks} * kStoreBlockWords];
-  std::uint32_t free_blocks[kLayout.pool_blocks];
-  std::uint32_t changed_blocks[kLayout.blocks];
-  std::uint64_t changed_hashes[kLayout.blocks];
-  std::uint64_t block_hashes[kLayout.blocks];
+  static constexpr std::size_t at_least_one(std::size_t count) { return count == 0 ? 1 : count; }
+  static constexpr std::size_t kSideWords = at_least_one(kLayout.dense_words());
+  static constexpr std::size_t kTable = at_least_one(kLayout.table_blocks());
+  static constexpr std::size_t kPool = at_least_one(kLayout.pool_blocks);
+
+  std::uint64_t sides[2][kSideWords];
+  std::uint64_t changed_bits[at_least_one(kLayout.changed_bits_words())];
+  std::uint32_t slots[2][kTable];
+  std::uint64_t pool[kPool * kStoreBlockWords];
+  std::uint32_t free_blocks[kPool];
+  std::uint32_t changed_blocks[kTable];
+  std::uint64_t changed_hashes[kTable];
+  std::uint64_t block_hashes[kTable];
 
   MapStoreStorage storage() noexcept {
-    return {{slots[0], slots[1]}, pool, free_blocks, changed_blocks, changed_hashes, block_hashes};
+    if (kLayout.dense) return {{sides[0], sides[1]}, changed_bits, {}, {}, {}, {}, {}, {}};
+    return {
+        {},          {}, {slots[0], slots[1]}, pool, free_blocks, changed_blocks, changed_hashes,
+        block_hashes};
   }
 };
 
@@ -105,7 +133,7 @@ class MapStore {
   static constexpr std::uint32_t kUnlimited = 0xFFFFFFFFu;
 
   // Starts with no map (version 0, every cell forbidden). Precondition (checked): every array of
-  // `storage` is there and layout.cell_count > 0.
+  // `storage` the layout's form uses is there and layout.cell_count > 0.
   MapStore(const MapStoreLayout& layout, const MapStoreStorage& storage) noexcept;
   MapStore(const MapStore&) = delete;
   MapStore& operator=(const MapStore&) = delete;
@@ -140,6 +168,7 @@ class MapStore {
 
   // The held map; it changes only in the work() call that returns kApplied.
   MapView view() const noexcept {
+    if (layout_.dense) return {storage_.sides[held_], layout_.cell_count};
     return {storage_.slots[held_], storage_.pool, layout_.cell_count};
   }
   std::uint64_t version() const noexcept { return version_; }  // 0: no map
@@ -148,9 +177,10 @@ class MapStore {
   CellIndex cell_count() const noexcept { return layout_.cell_count; }
   const MapStoreLayout& layout() const noexcept { return layout_; }
 
-  // The held map's blocks by kind, and how often a mixed block found the pool full (all updates).
-  // (mixed_blocks() counts the old map's blocks too until the upkeep after a swap is done.)
-  std::uint32_t mixed_blocks() const noexcept { return layout_.pool_blocks - free_count_; }
+  // The compressed form: the pool blocks in use (the held map's mixed blocks, and the old map's
+  // too until the upkeep after a swap is done), the held map's degraded blocks, and how often a
+  // mixed block found the pool full (all updates). All 0 in the dense form.
+  std::uint32_t pool_blocks_used() const noexcept { return layout_.pool_blocks - free_count_; }
   std::uint32_t degraded_blocks() const noexcept { return degraded_blocks_; }
   std::uint64_t pool_overflows() const noexcept { return pool_overflows_; }
 
@@ -163,6 +193,7 @@ class MapStore {
   };
   // One step of each phase; each returns the chunk's outcome when it has one, else kWorking.
   MapOffer level_step() noexcept;
+  bool level_dense() noexcept;
   MapOffer runs_step() noexcept;
   MapOffer finish_step() noexcept;
   void start_chunk() noexcept;
@@ -177,6 +208,7 @@ class MapStore {
   void held_words(std::uint32_t block, std::uint64_t* out) noexcept;
   std::uint64_t block_hash(std::uint32_t block, const std::uint64_t* words) const noexcept;
   void store(std::uint32_t block, const std::uint64_t* words) noexcept;
+  void store_dense(std::uint32_t block, const std::uint64_t* words) noexcept;
   std::uint64_t valid_bits(std::uint32_t block, std::uint32_t word) const noexcept;
 
   MapStoreLayout layout_;
@@ -204,8 +236,11 @@ class MapStore {
   bool have_run_ = false;
   CellRun run_{};  // the run being applied; run_.begin advances block by block
 
-  // Making the working table level: changed_blocks [level_next_ .. changed_count_) are left.
+  // Making the working side level: of the changed_count_ blocks, level_next_ are done (compressed:
+  // changed_blocks [level_next_ .. changed_count_) are left; dense: the set bits of changed_bits
+  // from word level_word_ on).
   std::uint32_t level_next_ = 0;
+  std::uint32_t level_word_ = 0;
   bool swapped_ = false;  // after a swap (the hashes move in), not a refusal
 
   // The update being collected.

@@ -1,7 +1,8 @@
 #pragma once
-// A read-only view of the controller's compressed forbidden map (map_store.hpp): the grid in
-// blocks of 512 cells, each free, forbidden, or mixed with its 8 words in a pool. A block the
-// store could not hold exactly (its pool was full) reads as forbidden. Look-up is O(1).
+// A read-only view of the controller's forbidden map (map_store.hpp), held in one of two forms:
+// dense (every word of the grid), or compressed: the grid in blocks of 512 cells, each free,
+// forbidden, or mixed with its 8 words in a pool. A block the compressed store could not hold
+// exactly (its pool was full) reads as forbidden. Look-up is O(1) in both.
 // Thread context: the controller's cycle; valid until the next MapStore::offer() that applies an
 // update or reset().
 
@@ -30,14 +31,19 @@ constexpr std::uint32_t store_blocks_for(CellIndex cell_count) noexcept {
 
 class MapView {
  public:
+  // A compressed map: a slot per block, and the pool the slots point into.
   MapView(const std::uint32_t* slots, const std::uint64_t* pool, CellIndex cell_count) noexcept
-      : slots_(slots), pool_(pool), cell_count_(cell_count) {}
+      : slots_(slots), pool_(pool), dense_(nullptr), is_dense_(false), cell_count_(cell_count) {}
+  // A dense map: words_for(cell_count) words.
+  MapView(const std::uint64_t* dense, CellIndex cell_count) noexcept
+      : slots_(nullptr), pool_(nullptr), dense_(dense), is_dense_(true), cell_count_(cell_count) {}
 
   CellIndex cell_count() const noexcept { return cell_count_; }
 
-  // Word w of the map (cells 64 w .. 64 w + 63); a forbidden block's words are all ones, also
-  // past the last cell, which the searches below never look at.
+  // Word w of the map (cells 64 w .. 64 w + 63); a compressed forbidden block's words are all
+  // ones, also past the last cell, which the searches below never look at.
   std::uint64_t word(std::uint32_t w) const noexcept {
+    if (is_dense_) return dense_[w];
     const std::uint32_t slot = slots_[w / kStoreBlockWords];
     if (is_pool_slot(slot))
       return pool_[std::uint64_t{slot} * kStoreBlockWords + w % kStoreBlockWords];
@@ -69,6 +75,8 @@ class MapView {
  private:
   const std::uint32_t* slots_;
   const std::uint64_t* pool_;
+  const std::uint64_t* dense_;
+  bool is_dense_;
   CellIndex cell_count_;
 };
 

@@ -3,7 +3,8 @@
 // collected into a working copy, and the copy becomes the held map only when the update is whole
 // and its map hash matches (double buffer: a reader of map() never sees a half-applied update).
 // Which chunks make an update is map_update_sequence.hpp's. The controller holds its map in the
-// compressed MapStore (controller/map_store); this one is the reference the tests hold it against.
+// MapStore (controller/map_store: sliced work, dense or compressed); this one is the reference the
+// tests hold it against.
 // Storage is the caller's, sized from the grid (words_for(cells) words per map,
 // map_hash_blocks(cells) hashes per map); nothing is allocated.
 // Thread context: one thread (the controller's link or cycle task). Real-time: a chunk costs

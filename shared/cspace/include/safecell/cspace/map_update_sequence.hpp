@@ -1,6 +1,6 @@
 #pragma once
 // Which chunks make one map update, whatever the receiver stores the map in: the dense
-// MapAssembler (map_assembler.hpp) and the controller's compressed MapStore share these rules.
+// MapAssembler (map_assembler.hpp) and the controller's MapStore share these rules.
 //
 // The safety layer below delivers frames in order or not at all, so an update's chunks must come
 // as chunk 0, 1, ... with each starting where the last one ended and the last ending at the grid's

@@ -87,7 +87,7 @@ struct ControllerConfig {
   ControllerSafety safety;
   ControllerLinkSettings link;
   ControllerTask task;
-  std::uint32_t pool_blocks = 0;  // 0: default_pool_blocks of the grid
+  std::uint32_t pool_blocks = 0;  // 0: the map held dense; N: compressed, a pool of N blocks
 };
 
 // Reads and checks a configuration file; throws ControllerConfigError.

@@ -14,19 +14,24 @@ class MapStoreMemory {
  public:
   explicit MapStoreMemory(const MapStoreLayout& layout)
       : layout_(layout),
-        slots_{std::vector<std::uint32_t>(layout.blocks),
-               std::vector<std::uint32_t>(layout.blocks)},
+        sides_{std::vector<std::uint64_t>(layout.dense_words()),
+               std::vector<std::uint64_t>(layout.dense_words())},
+        changed_bits_(layout.changed_bits_words()),
+        slots_{std::vector<std::uint32_t>(layout.table_blocks()),
+               std::vector<std::uint32_t>(layout.table_blocks())},
         pool_(std::size_t{layout.pool_blocks} * kStoreBlockWords),
         free_blocks_(layout.pool_blocks),
-        changed_blocks_(layout.blocks),
-        changed_hashes_(layout.blocks),
-        block_hashes_(layout.blocks) {}
+        changed_blocks_(layout.table_blocks()),
+        changed_hashes_(layout.table_blocks()),
+        block_hashes_(layout.table_blocks()) {}
   MapStoreMemory(const MapStoreMemory&) = delete;
   MapStoreMemory& operator=(const MapStoreMemory&) = delete;
 
   const MapStoreLayout& layout() const { return layout_; }
   MapStoreStorage storage() {
-    return {{slots_[0].data(), slots_[1].data()},
+    return {{sides_[0].data(), sides_[1].data()},
+            changed_bits_.data(),
+            {slots_[0].data(), slots_[1].data()},
             pool_.data(),
             free_blocks_.data(),
             changed_blocks_.data(),
@@ -36,6 +41,8 @@ class MapStoreMemory {
 
  private:
   MapStoreLayout layout_;
+  std::vector<std::uint64_t> sides_[2];
+  std::vector<std::uint64_t> changed_bits_;
   std::vector<std::uint32_t> slots_[2];
   std::vector<std::uint64_t> pool_;
   std::vector<std::uint32_t> free_blocks_;
