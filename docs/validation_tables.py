@@ -166,6 +166,7 @@ def fine_grid_target_rows():
     build = report(os.path.join(again, "build"))
     level = [report(os.path.join(again, f"bench-level-vote-{k}")) for k in (1, 2, 3)]
     small_pool = report(os.path.join(again, "bench-store-pool-1.5x"))
+    dense_store = report(os.path.join(again, "bench-dense-store"))
     every = [b["cell"]["fusion_p99_ms"] for b in level]
     return [
         ["6 cm grid: tables built on 2 cores", "<= 600 s", f"{first_build['build_s']:.0f} s",
@@ -177,12 +178,15 @@ def fine_grid_target_rows():
          f"{first_build['bytes_per_camera'] / 1e6:.0f} MB",
          f"**{build['bytes_per_camera'] / 1e6:.0f} MB**"],
         ["6 cm grid: the controller's map store holding its maps (blocks degraded)",
-         "0 degraded",
+         "<= 4.18 MB (the controller issue's figure), 0 degraded",
          f"{small_pool['cell']['map_store_bytes'] / 1e6:.2f} MB "
-         f"({n(int(small_pool['cell']['map_store_degraded_blocks_max']))}; the pool before "
-         "97203e4, the same day)",
-         f"**{level[0]['cell']['map_store_bytes'] / 1e6:.2f} MB** "
-         f"({n(int(level[0]['cell']['map_store_degraded_blocks_max']))})"],
+         f"({n(int(small_pool['cell']['map_store_degraded_blocks_max']))}; the pool of one and a "
+         f"half blocks per block, before 97203e4); {level[0]['cell']['map_store_bytes'] / 1e6:.2f}"
+         f" MB ({n(int(level[0]['cell']['map_store_degraded_blocks_max']))}; two, before f1a3f18)",
+         f"**{dense_store['cell']['map_store_bytes'] / 1e6:.2f} MB** "
+         f"({n(int(dense_store['cell']['map_store_degraded_blocks_max']))}; dense; "
+         f"{n(int(dense_store['cell']['map_store_inexact_maps']))} of "
+         f"{dense_store['cell']['map_store_maps']} maps not held bit for bit)"],
     ]
 
 
@@ -1214,6 +1218,23 @@ def fine_grid_section():
     fine_grid_again_section()
 
 
+def store_costs():
+    """The map store's work per block and per delta, the pool (be2b5d5) against the dense store."""
+    runs = {form: [report(f"fine-grid/at-fd237e7/controller-bench-{form}-{k}") for k in (1, 2)]
+            for form in ("pool", "dense")}
+
+    def span(form, key, digits):
+        values = sorted(r[key] for r in runs[form])
+        low, high = f"{values[0]:.{digits}f}", f"{values[-1]:.{digits}f}"
+        return low if low == high else f"{low}-{high}"
+
+    return (f"{span('dense', 'map_work_ns_per_block', 0)} ns dense against "
+            f"{span('pool', 'map_work_ns_per_block', 0)} ns for the pool; a delta of the default "
+            f"grid {span('dense', 'delta_apply_us', 1)} against {span('pool', 'delta_apply_us', 1)}"
+            f" us, of the 14 M-cell grid {span('dense', 'delta_apply_14m_us', 0)} against "
+            f"{span('pool', 'delta_apply_14m_us', 0)} us (p50)")
+
+
 def fine_grid_again_section():
     """The 6 cm grid's script run again on a later machine, with the map store's figures."""
     date, commit, sub = FINE_GRID_AGAIN
@@ -1234,6 +1255,7 @@ def fine_grid_again_section():
     level_runs = [r(f"bench-level-vote-{k}") for k in (1, 2, 3)
                   if os.path.exists(os.path.join(again, f"bench-level-vote-{k}.json"))]
     small_pool = r("bench-store-pool-1.5x")
+    dense_store = r("bench-dense-store")
 
     def fused(b):
         c = b["cell"]
@@ -1279,6 +1301,10 @@ def fine_grid_again_section():
          " (1.5 blocks per grid block)", store(small_pool), "0 degraded"],
         ["the same, the pool of 97203e4 (2 blocks per grid block)", store(runs[0]),
          "0 degraded"],
+        ["the same, the dense store of f1a3f18 (the default since)", store(dense_store) + ", " +
+         n(int(dense_store["cell"]["map_store_inexact_maps"])) + " of " +
+         str(dense_store["cell"]["map_store_maps"]) + " maps not held bit for bit",
+         "0 degraded, <= 4.18 MB"],
     ]))
     w("")
     big = fine_grid_validation_table(r, "0.18 m")
@@ -1341,7 +1367,18 @@ def fine_grid_again_section():
       f"{(runs[0]['cell']['map_store_bytes'] - small_pool['cell']['map_store_bytes']) / 1e6:.1f}"
       " MB above the controller issue's figure (a dense double buffer of the grid would take "
       f"{2 * ((runs[0]['cell']['cells'] + 63) // 64) * 8 / 1e6:.2f} MB: on maps like these "
-      "the blocks do not compress).")
+      "the blocks do not compress). **So since f1a3f18 the store holds the map dense by "
+      "default**: both sides whole, a bit per block for the blocks an update changed, and no "
+      "stored block hashes (the held block's hash is computed beside the new one's, in one loop). "
+      "`safecell-controller-bench` (its synthetic maps on the default grid), the pool of be2b5d5 "
+      "and the dense store taking turns, two runs each: a block stored and made level " +
+      store_costs() + ". " +
+      f"{dense_store['cell']['map_store_bytes'] / 1e6:.2f} MB on the 6 cm grid, within the "
+      "controller issue's 4.18 MB; each of the " + str(dense_store["cell"]["map_store_maps"]) +
+      " maps checked bit for bit against the map sent (" +
+      n(int(dense_store["cell"]["map_store_inexact_maps"])) + " not). The compressed form stays "
+      "for a controller short of memory (`map_store: pool_blocks: N`, blocks beyond the pool "
+      "held forbidden).")
     w("")
     commands_footer(again_commands, again_seconds, beside_other_work=False, skip=("build",))
 
