@@ -656,14 +656,16 @@ int main(int argc, char** argv) {
       rest.push_back(argv[i]);
     }
   }
+  int count = static_cast<int>(rest.size());
+  benchmark::Initialize(&count, rest.data());
+  // What neither this program nor Google Benchmark took (such as `--maps FILE` without the `=`).
+  if (benchmark::ReportUnrecognizedArguments(count, rest.data())) return 2;
   try {
     maps() = maps_path.empty() ? synthetic_maps(default_grid(), 30) : read_map_sequence(maps_path);
   } catch (const std::exception& error) {
     std::cerr << "safecell-controller-bench: " << error.what() << "\n";
     return 2;
   }
-  int count = static_cast<int>(rest.size());
-  benchmark::Initialize(&count, rest.data());
   CounterCollector collector;
   benchmark::RunSpecifiedBenchmarks(&collector);
   if (json) {
