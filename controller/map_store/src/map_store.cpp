@@ -7,6 +7,28 @@
 
 namespace safecell {
 static_assert(kMapHashBlockCells == kStoreBlockCells, "the store hashes the blocks it stores");
+namespace {
+
+// The map hash's hashes of block `block` (map_hash.hpp) holding each of N sets of its words, in
+// one loop: N independent chains of multiplies that the core overlaps (the dense store hashes the
+// held and the new words of a block; two calls one after the other took 48 ns a block, against
+// 41-43 ns).
+template <std::size_t N>
+void block_hashes(std::uint32_t block, const std::uint64_t* const (&words)[N],
+                  std::uint64_t (&hashes)[N]) noexcept {
+  for (std::uint64_t& hash : hashes) hash = map_block_hash_seed(block);
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
+    for (std::size_t k = 0; k < N; ++k) hashes[k] = map_hash_mix(hashes[k] ^ words[k][w]);
+  }
+}
+
+std::uint64_t block_hash(std::uint32_t block, const std::uint64_t* words) noexcept {
+  std::uint64_t hash[1];
+  block_hashes<1>(block, {words}, hash);
+  return hash[0];
+}
+
+}  // namespace
 
 MapStore::MapStore(const MapStoreLayout& layout, const MapStoreStorage& storage) noexcept
     : layout_(layout), storage_(storage) {
@@ -356,12 +378,6 @@ void MapStore::held_words(std::uint32_t block, std::uint64_t* out) noexcept {
   }
 }
 
-std::uint64_t MapStore::block_hash(std::uint32_t block, const std::uint64_t* words) const noexcept {
-  std::uint64_t hash = map_block_hash_seed(block);
-  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) hash = map_hash_mix(hash ^ words[w]);
-  return hash;
-}
-
 void MapStore::store(std::uint32_t block, const std::uint64_t* words) noexcept {
   work_done_ += kWorkPerBlock;
   if (layout_.dense) {
@@ -411,18 +427,14 @@ void MapStore::store_dense(std::uint32_t block, const std::uint64_t* words) noex
   bool same = true;
   for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) same = same && work[w] == words[w];
   if (same) return;
-  // The held words' hash and the new words' hash, as block_hash() computes each, in one loop: two
-  // independent chains of multiplies that the core overlaps (two calls took half as long again).
-  std::uint64_t old_hash = map_block_hash_seed(block);
-  std::uint64_t hash = old_hash;
-  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) {
-    old_hash = map_hash_mix(old_hash ^ work[w]);
-    hash = map_hash_mix(hash ^ words[w]);
-    work[w] = words[w];
-  }
+  // No stored hash of the held block (the dense form keeps no hashes): its words are hashed again
+  // here, beside the new ones.
+  std::uint64_t hashes[2];
+  block_hashes<2>(block, {work, words}, hashes);
+  update_combined_ ^= hashes[0] ^ hashes[1];
+  for (std::uint32_t w = 0; w < kStoreBlockWords; ++w) work[w] = words[w];
   storage_.changed_bits[block / 64] |= std::uint64_t{1} << (block % 64);
   ++changed_count_;
-  update_combined_ ^= old_hash ^ hash;
 }
 
 std::uint64_t MapStore::valid_bits(std::uint32_t block, std::uint32_t word) const noexcept {

@@ -206,7 +206,6 @@ class MapStore {
   void load_block(std::uint32_t block, bool whole) noexcept;
   void finish_loaded() noexcept;
   void held_words(std::uint32_t block, std::uint64_t* out) noexcept;
-  std::uint64_t block_hash(std::uint32_t block, const std::uint64_t* words) const noexcept;
   void store(std::uint32_t block, const std::uint64_t* words) noexcept;
   void store_dense(std::uint32_t block, const std::uint64_t* words) noexcept;
   std::uint64_t valid_bits(std::uint32_t block, std::uint32_t word) const noexcept;

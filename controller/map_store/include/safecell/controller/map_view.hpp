@@ -76,6 +76,8 @@ class MapView {
   const std::uint32_t* slots_;
   const std::uint64_t* pool_;
   const std::uint64_t* dense_;
+  // Which form, said outright rather than read off a null pointer: the static analyser cannot
+  // follow "slots_ null means dense_ set" and reports a null dereference.
   bool is_dense_;
   CellIndex cell_count_;
 };
