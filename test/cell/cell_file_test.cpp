@@ -279,7 +279,8 @@ TEST(CellFile, RobotSectionAndRelativeUrdfPaths) {
                      "joints: []\n"),
             "bad.yaml:3: robot.tool.point_m: expected [x, y, z] in metres, got a list");
   EXPECT_EQ(error_of("name: r\nm_max_m: 0.18\nrobot: {path: a.urdf}\njoints: []\n"),
-            "bad.yaml:3: robot.path: unknown field (expected one of: urdf, tool_link, tool)");
+            "bad.yaml:3: robot.path: unknown field (expected one of: urdf, tool_link, tool, "
+            "collision_stand_ins)");
 }
 
 TEST(CellFile, LoadsFromDisk) {

@@ -45,7 +45,7 @@ TEST(CellGrid, AbsurdValuesAreNamedWithFileLineFieldAndValue) {
             "lower < upper");
   EXPECT_EQ(grid_error_of(replaced(kCell, "l_m: 0.5", "l_m: 0.05")),
             "cell.yaml:9: joints[1].l_m: value 0.05, expected at least m_max_m / 2 = 0.09 m for a "
-            "discretised joint");
+            "discretised joint (one that moves the robot less is swept: discretised: false)");
   EXPECT_EQ(grid_error_of(replaced(kCell, "0.18", ".nan")),
             "cell.yaml:2: m_max_m: value nan, expected a distance above 0 m");
 }

@@ -8,49 +8,14 @@
 #include "robot_fixtures.hpp"
 #include "safecell/robot/mesh_loader.hpp"
 #include "safecell/robot/robot_error.hpp"
+#include "two_joint_arm.hpp"
 
 namespace safecell {
 namespace {
 
-// A two-joint arm; {EXTRA} is replaced by each test.
-constexpr const char* kTwoJointArm = R"(<?xml version="1.0"?>
-<robot name="two">
-  <link name="base"/>
-  <joint name="a" type="revolute">
-    <parent link="base"/><child link="upper"/>
-    <origin xyz="0 0 0.5"/><axis xyz="0 0 1"/>
-    <limit lower="-1" upper="1" effort="1" velocity="2"/>
-  </joint>
-  <link name="upper">
-    <collision><geometry><box size="0.1 0.1 0.4"/></geometry></collision>
-  </link>
-  <joint name="b" type="revolute">
-    <parent link="upper"/><child link="lower"/>
-    <origin xyz="0 0 0.4"/><axis xyz="0 1 0"/>
-    <limit lower="-2" upper="2" effort="1" velocity="2"/>
-  </joint>
-  <link name="lower"/>
-  {EXTRA}
-</robot>)";
-
-std::string arm_with(const std::string& extra) {
-  std::string text = kTwoJointArm;
-  return text.replace(text.find("{EXTRA}"), 7, extra);
-}
-
-std::string error_of(const std::string& xml, const UrdfOptions& options = {}) {
-  try {
-    static_cast<void>(parse_urdf(xml, "arm.urdf", std::filesystem::temp_directory_path(), options));
-  } catch (const RobotError& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
-
-void expect_error(const std::string& message, const std::string& part) {
-  EXPECT_EQ(message.rfind("arm.urdf: ", 0), 0u) << message;
-  EXPECT_NE(message.find(part), std::string::npos) << message;
-}
+using test::arm_with;
+using test::error_of;
+using test::expect_error;
 
 TEST(UrdfLoader, ReadsTheChain) {
   const RobotModel robot = parse_urdf(arm_with(""), "arm.urdf", {});
@@ -75,15 +40,15 @@ TEST(UrdfLoader, FoldsFixedLinksIntoTheLinkTheyHangFrom) {
                   <link name="camera_mount"><collision><geometry><sphere radius="0.02"/></geometry></collision></link>)"),
                  "arm.urdf", {});
   ASSERT_EQ(robot.dof(), 2u);
-  ASSERT_EQ(robot.links[1].collision.size(), 1u);  // the tip's sphere, 0.3 m out on "lower"
-  EXPECT_NEAR(robot.links[1].collision[0].pose.translation().z(), 0.3, 1e-12);
+  ASSERT_EQ(robot.links[1].collision.size(), 2u);  // its cylinder and the tip's sphere 0.3 m out
+  EXPECT_NEAR(robot.links[1].collision[1].pose.translation().z(), 0.3, 1e-12);
   ASSERT_EQ(robot.links[0].collision.size(), 2u);  // the side branch folds into "upper"
   EXPECT_NEAR(robot.frame("camera_mount")->pose.translation().x(), 0.1, 1e-12);
   EXPECT_EQ(robot.frame("tip")->link, 1);
 }
 
 TEST(UrdfLoader, RefusesWhatItCannotUse) {
-  expect_error(error_of("<robot name='x'><link name='a'/>"), "not a valid URDF");
+  expect_error(error_of("<robot name='x'><link name='a'/>"), "not well-formed XML");
   expect_error(error_of(arm_with(R"(<joint name="s" type="spherical"><parent link="lower"/>
                                     <child link="ball"/></joint><link name="ball"/>)")),
                "not a valid URDF");
@@ -94,10 +59,10 @@ TEST(UrdfLoader, RefusesWhatItCannotUse) {
                                     <child link="side"/><axis xyz="1 0 0"/>
                                     <limit lower="0" upper="0.1" effort="1" velocity="1"/></joint>
                                     <link name="side"/>)"),
-                        UrdfOptions{"lower"}),
+                        UrdfOptions{"lower", {}}),
                "only serial chains are supported");
-  expect_error(error_of(arm_with(""), UrdfOptions{"gripper"}), "no link named 'gripper'");
-  expect_error(error_of(arm_with(""), UrdfOptions{"base"}), "is the root link");
+  expect_error(error_of(arm_with(""), UrdfOptions{"gripper", {}}), "no link named 'gripper'");
+  expect_error(error_of(arm_with(""), UrdfOptions{"base", {}}), "is the root link");
   // A link with two parents closes a loop.
   expect_error(error_of(arm_with(R"(<joint name="loop" type="fixed"><parent link="lower"/>
                                     <child link="upper"/></joint>)")),

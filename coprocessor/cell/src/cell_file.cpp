@@ -1,5 +1,6 @@
 #include "safecell/cell/cell_file.hpp"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Geometry>
@@ -123,7 +124,7 @@ PlacedShape tool_shape_of(const Field& field) {
 
 RobotConfig robot_of(const Field& field, const std::filesystem::path& base_directory) {
   require_mapping(field);
-  refuse_unknown_keys(field, {"urdf", "tool_link", "tool"});
+  refuse_unknown_keys(field, {"urdf", "tool_link", "tool", "collision_stand_ins"});
   RobotConfig robot;
   robot.at = field.at;
   robot.urdf = text_of(require(field, "urdf"));
@@ -140,6 +141,16 @@ RobotConfig robot_of(const Field& field, const std::filesystem::path& base_direc
     }
     if (tool.node["shapes"]) {
       robot.tool_shapes = list_of<PlacedShape>(require(tool, "shapes"), tool_shape_of);
+    }
+  }
+  if (field.node["collision_stand_ins"]) {
+    const Field stand_ins = require(field, "collision_stand_ins");
+    require_mapping(stand_ins);
+    refuse_repeated_keys(stand_ins);
+    for (const auto& entry : stand_ins.node) {
+      const std::string link = entry.first.Scalar();
+      robot.collision_stand_ins[link] =
+          list_of<PlacedShape>(require(stand_ins, link), tool_shape_of);
     }
   }
   return robot;
@@ -356,6 +367,9 @@ CellConfig parse_cell_yaml(std::string_view text, const std::string& source,
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
+  } catch (const YAML::DeepRecursion& error) {
+    throw_cell_error(SourceLine{source, error.mark.line >= 0 ? error.mark.line + 1 : 0}, "(file)",
+                     "nested deeper than yaml-cpp's limit of 2000 levels, expected a cell file");
   } catch (const YAML::Exception& error) {
     throw_cell_error(SourceLine{source, error.mark.line >= 0 ? error.mark.line + 1 : 0}, "(file)",
                      "not valid YAML: " + error.msg);
@@ -495,6 +509,13 @@ CellConfig load_cell_file(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path, error)) {
     throw_cell_error(SourceLine{path.string(), 0}, "(file)",
                      "is a directory, expected a YAML file");
+  }
+  // Larger is no cell (the default is 3 kB): refused before yaml-cpp reads it.
+  constexpr std::uintmax_t kMaxCellBytes = std::uintmax_t{1} << 20;
+  if (const auto bytes = std::filesystem::file_size(path, error); !error && bytes > kMaxCellBytes) {
+    throw_cell_error(SourceLine{path.string(), 0}, "(file)",
+                     std::to_string(bytes) + " bytes, expected at most " +
+                         std::to_string(kMaxCellBytes) + " for a cell file");
   }
   std::ifstream file(path, std::ios::binary);
   if (!file) {

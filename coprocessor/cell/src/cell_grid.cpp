@@ -39,9 +39,11 @@ std::string number(double value) {
       throw_cell_error(
           joint.l_at, joint_path + ".l_m",
           "value " + number(joint.l_m.value()) +
-              (joint.discretised ? ", expected at least m_max_m / 2 = " +
-                                       number(cell.m_max_m / 2.0) + " m for a discretised joint"
-                                 : ", expected a finite distance >= 0 m"));
+              (joint.discretised
+                   ? ", expected at least m_max_m / 2 = " + number(cell.m_max_m / 2.0) +
+                         " m for a discretised joint (one that moves the robot "
+                         "less is swept: discretised: false)"
+                   : ", expected a finite distance >= 0 m"));
     }
     case GridField::kCellCount:
       throw_cell_error(cell.joints.at(joint_index).l_at, joint_path,

@@ -28,6 +28,10 @@ RobotModel load_robot(const RobotConfig& robot) {
         throw_cell_error(robot.at, "robot.urdf",
                          "unknown built-in robot '" + robot.urdf + "' (expected " + builtin + ")");
       }
+      if (!robot.collision_stand_ins.empty()) {
+        throw_cell_error(robot.at, "robot.collision_stand_ins",
+                         "given, but the built-in arm has collision geometry on every link");
+      }
       RobotModel model = default_robot();
       if (!robot.tool_link.empty() && !model.frame(robot.tool_link)) {
         throw_cell_error(robot.at, "robot.tool_link",
@@ -35,7 +39,7 @@ RobotModel load_robot(const RobotConfig& robot) {
       }
       return model;
     }
-    return load_urdf_file(robot.urdf, UrdfOptions{robot.tool_link});
+    return load_urdf_file(robot.urdf, UrdfOptions{robot.tool_link, robot.collision_stand_ins});
   } catch (const RobotError& error) {
     throw_cell_error(robot.at, "robot.urdf", error.what());
   }
@@ -75,6 +79,7 @@ void settle_from_robot(CellModel& model) {
                        "given, but l_i is computed from the robot model; remove it");
     }
     joint.l_m = model.lever_arms->envelope_m[j];
+    joint.l_at = joint.at;  // an error about it names the joint's line: it has none of its own
     const std::array<double, 2> limits{arm.lower * kDegPerRad, arm.upper * kDegPerRad};
     if (!joint.range_deg) {
       joint.range_deg = limits;

@@ -21,17 +21,24 @@ std::string shown(const YAML::Node& node) {
   return "nothing";
 }
 
-void refuse_unknown_keys(const Field& map, std::initializer_list<std::string_view> known) {
+void refuse_repeated_keys(const Field& map) {
   // yaml-cpp keeps a repeated key and answers the first: the later line would be ignored.
   std::map<std::string, SourceLine> seen;
   for (const auto& entry : map.node) {
-    const auto key = entry.first.as<std::string>();
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : shown(entry.first);
     const SourceLine at = line_of(entry.first, map.at.source);
     const auto [first, inserted] = seen.emplace(key, at);
     if (!inserted) {
       throw_cell_error(at, (map.path.empty() ? "" : map.path + ".") + key,
                        "given twice (first on line " + std::to_string(first->second.line) + ")");
     }
+  }
+}
+
+void refuse_unknown_keys(const Field& map, std::initializer_list<std::string_view> known) {
+  refuse_repeated_keys(map);
+  for (const auto& entry : map.node) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : shown(entry.first);
     bool found = false;
     std::string expected;
     for (const auto name : known) {

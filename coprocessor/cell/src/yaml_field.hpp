@@ -23,6 +23,8 @@ struct Field {
 SourceLine line_of(const YAML::Node& node, const std::string& source);
 // How a node looks, for messages: 'text', a list, a mapping or nothing.
 std::string shown(const YAML::Node& node);
+// Throws CellError for a key of `map` that is given twice.
+void refuse_repeated_keys(const Field& map);
 // Throws CellError for a key of `map` that is not `known`, or that is given twice.
 void refuse_unknown_keys(const Field& map, std::initializer_list<std::string_view> known);
 // Precondition: map is a mapping. Throws CellError when the key is missing.

@@ -11,6 +11,7 @@
 #include "safecell/cell/cell_model.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/pipeline/cell_fusion_settings.hpp"
+#include "safecell/robot/link_geometry.hpp"
 
 namespace safecell {
 namespace {
@@ -21,6 +22,52 @@ double degrees(double radians) { return radians * 180.0 / kPi; }
 // inside every cell costs less than discretising it.
 std::string advice(const CspaceGrid& grid, std::uint32_t joint) {
   return grid.joint(joint).l_m > grid.m_max_m() ? "discretise" : "sweep";
+}
+
+// "x -0.210..0.210  y ...": the box that bounds a link's shapes, in its frame.
+std::string bounds_text(const LinkGeometry& link) {
+  if (link.bounds_m.isEmpty()) return "-";
+  std::string text;
+  for (int axis = 0; axis < 3; ++axis) {
+    text += std::string(axis == 0 ? "" : "  ") + "xyz"[axis] + " " +
+            fixed(link.bounds_m.min()[axis], 3) + ".." + fixed(link.bounds_m.max()[axis], 3);
+  }
+  return text;
+}
+
+nlohmann::ordered_json links_json(const RobotModel& robot) {
+  nlohmann::ordered_json links = nlohmann::ordered_json::array();
+  for (const LinkGeometry& link : collision_geometry_of(robot)) {
+    nlohmann::ordered_json entry;
+    entry["link"] = link.link;
+    entry["shapes"] = {{"meshes", link.meshes},
+                       {"boxes", link.boxes},
+                       {"spheres", link.spheres},
+                       {"cylinders", link.cylinders},
+                       {"capsules", link.capsules}};
+    entry["triangles"] = link.triangles;
+    if (link.bounds_m.isEmpty()) {
+      entry["bounds_m"] = nullptr;
+    } else {
+      const Eigen::Vector3d& lo = link.bounds_m.min();
+      const Eigen::Vector3d& hi = link.bounds_m.max();
+      entry["bounds_m"] = {{"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}};
+    }
+    links.push_back(std::move(entry));
+  }
+  return links;
+}
+
+void print_links(const RobotModel& robot, std::ostream& out) {
+  using Align = TextTable::Align;
+  TextTable table({{"link", Align::kLeft},
+                   {"collision shapes", Align::kLeft},
+                   {"triangles", Align::kRight},
+                   {"bounds in the link's frame [m]", Align::kLeft}});
+  for (const LinkGeometry& link : collision_geometry_of(robot)) {
+    table.add_row({link.link, shape_list(link), grouped(link.triangles), bounds_text(link)});
+  }
+  table.print(out);
 }
 
 nlohmann::ordered_json to_json(const CellModel& model, const CspaceGrid& grid) {
@@ -45,7 +92,10 @@ nlohmann::ordered_json to_json(const CellModel& model, const CspaceGrid& grid) {
   nlohmann::ordered_json report;
   report["cell"] = cell.name;
   report["source"] = cell.source;
-  if (model.robot) report["robot"] = model.robot->name;
+  if (model.robot) {
+    report["robot"] = model.robot->name;
+    report["links"] = links_json(*model.robot);
+  }
   report["m_max_m"] = grid.m_max_m();
   report["joints"] = std::move(joints);
   report["cells"] = grid.cell_count();
@@ -63,7 +113,9 @@ void print_text(const CellModel& model, const CspaceGrid& grid, std::ostream& ou
   out << cell.name << "  (" << cell.source << ")\n";
   if (model.robot) {
     out << "robot: " << model.robot->name << " (" << model.robot->source
-        << "); l is computed from its collision geometry, l tool from the tool point\n";
+        << "); l is computed from its collision geometry, l tool from the tool point\n\n";
+    print_links(*model.robot, out);
+    out << '\n';
   }
   out << "max-move m_max = " << fixed(grid.m_max_m(), 3) << " m\n\n";
   using Align = TextTable::Align;

@@ -3,6 +3,8 @@
 #include <console_bridge/console.h>
 
 #include <urdf_parser/urdf_parser.h>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -11,6 +13,7 @@
 
 #include "safecell/robot/mesh_loader.hpp"
 #include "safecell/robot/robot_error.hpp"
+#include "urdf_xml_check.hpp"
 
 namespace safecell {
 namespace {
@@ -51,8 +54,11 @@ class ChainBuilder {
   static constexpr std::size_t kMaxLinks = 10000;
 
   ChainBuilder(const urdf::ModelInterface& urdf, std::string source,
-               std::filesystem::path mesh_directory)
-      : urdf_(urdf), source_(std::move(source)), mesh_directory_(std::move(mesh_directory)) {}
+               std::filesystem::path mesh_directory, const UrdfOptions& options)
+      : urdf_(urdf),
+        source_(std::move(source)),
+        mesh_directory_(std::move(mesh_directory)),
+        options_(options) {}
 
   RobotModel build(const std::string& tool_link) {
     const auto path = path_to(tool_link.empty() ? deepest_leaf() : tool_link);
@@ -78,6 +84,7 @@ class ChainBuilder {
       fail("no movable joint between the root link '" + path.front()->name +
            "' and the tool link '" + path.back()->name + "'");
     }
+    check_every_moving_link_has_collision();
     return std::move(model_);
   }
 
@@ -132,22 +139,39 @@ class ChainBuilder {
     return path;
   }
 
+  // A length of a shape: finite and above 0 (urdfdom reads numbers strictly, not their range).
+  double length_of(double value, const std::string& link_name, const char* what) const {
+    if (!(std::isfinite(value) && value > 0.0)) {
+      fail("link '" + link_name + "': " + what + " is " + std::to_string(value) +
+           ", expected a length above 0 m");
+    }
+    return value;
+  }
+
   Shape shape_of(const urdf::Geometry& geometry, const std::string& link_name) const {
     switch (geometry.type) {
       case urdf::Geometry::BOX: {
         const auto& box = static_cast<const urdf::Box&>(geometry);
-        return Box{{box.dim.x, box.dim.y, box.dim.z}};
+        return Box{{length_of(box.dim.x, link_name, "<box size> x"),
+                    length_of(box.dim.y, link_name, "<box size> y"),
+                    length_of(box.dim.z, link_name, "<box size> z")}};
       }
       case urdf::Geometry::SPHERE:
-        return Sphere{static_cast<const urdf::Sphere&>(geometry).radius};
+        return Sphere{length_of(static_cast<const urdf::Sphere&>(geometry).radius, link_name,
+                                "<sphere radius>")};
       case urdf::Geometry::CYLINDER: {
         const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
-        return Cylinder{cylinder.radius, cylinder.length};
+        return Cylinder{length_of(cylinder.radius, link_name, "<cylinder radius>"),
+                        length_of(cylinder.length, link_name, "<cylinder length>")};
       }
       case urdf::Geometry::MESH: {
         const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
-        return load_mesh(mesh_path(mesh.filename, link_name),
-                         {mesh.scale.x, mesh.scale.y, mesh.scale.z});
+        const Eigen::Vector3d scale(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+        if (!(scale.allFinite() && scale.cwiseAbs().minCoeff() > 0.0)) {
+          fail("link '" + link_name + "': <mesh scale> of '" + mesh.filename +
+               "' is not three finite factors other than 0");
+        }
+        return load_mesh(mesh_path(mesh.filename, link_name), scale);
       }
     }
     fail("link '" + link_name + "' has collision geometry of an unknown type");
@@ -175,14 +199,49 @@ class ChainBuilder {
     RobotLink& target =
         current_ < 0 ? model_.base : model_.links[static_cast<std::size_t>(current_)];
     for (const auto& collision : link.collision_array) {
-      if (!collision || !collision->geometry) continue;
+      if (!collision || !collision->geometry)
+        fail("link '" + link.name + "': a <collision> with no geometry");
       target.collision.push_back(PlacedShape{shape_of(*collision->geometry, link.name),
                                              pose_ * to_isometry(collision->origin)});
     }
+    add_stand_in(link, target);
     for (const auto& visual : link.visual_array) {
-      if (!visual || !visual->geometry) continue;
+      if (!visual || !visual->geometry)
+        fail("link '" + link.name + "': a <visual> with no geometry");
       target.visual.push_back(
           PlacedShape{shape_of(*visual->geometry, link.name), pose_ * to_isometry(visual->origin)});
+    }
+  }
+
+  // The cell's geometry for a link the URDF gives none (UrdfOptions::collision_stand_ins).
+  void add_stand_in(const urdf::Link& link, RobotLink& target) {
+    const auto stand_in = options_.collision_stand_ins.find(link.name);
+    if (stand_in == options_.collision_stand_ins.end()) return;
+    if (!link.collision_array.empty()) {
+      fail("link '" + link.name +
+           "' has <collision> geometry, yet a stand-in is given for it; stand-ins are for links "
+           "without");
+    }
+    for (const PlacedShape& shape : stand_in->second) {
+      target.collision.push_back(PlacedShape{shape.shape, pose_ * shape.pose});
+    }
+    stood_in_.push_back(link.name);
+  }
+
+  void check_every_moving_link_has_collision() const {
+    for (const auto& [name, shapes] : options_.collision_stand_ins) {
+      if (std::find(stood_in_.begin(), stood_in_.end(), name) == stood_in_.end()) {
+        fail("a collision stand-in is given for link '" + name +
+             "', which is not on the chain from the root to the tool link");
+      }
+    }
+    for (const RobotLink& link : model_.links) {
+      if (link.collision.empty()) {
+        fail("link '" + link.name +
+             "' moves but has no <collision> geometry (nor has any fixed link on it): the tables "
+             "would never forbid touching it. Add its geometry to the URDF, or name the shapes "
+             "that stand in for it in the cell file (robot.collision_stand_ins)");
+      }
     }
   }
 
@@ -251,6 +310,8 @@ class ChainBuilder {
   const urdf::ModelInterface& urdf_;
   std::string source_;
   std::filesystem::path mesh_directory_;
+  const UrdfOptions& options_;
+  std::vector<std::string> stood_in_;  // links given their stand-in shapes
   RobotModel model_;
   int current_ = -1;                                        // movable link being filled; -1 = base
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();  // path link in that link's frame
@@ -260,23 +321,31 @@ class ChainBuilder {
 
 RobotModel parse_urdf(const std::string& xml, const std::string& source,
                       const std::filesystem::path& mesh_directory, const UrdfOptions& options) {
+  check_urdf_xml(xml, source);
   urdf::ModelInterfaceSharedPtr urdf;
   {
+    // urdfdom reports what it could not read as an error and leaves it out of the model (a
+    // collision with a malformed origin vanishes): any error it reports refuses the file.
     CapturedConsole console;
     urdf = urdf::parseURDF(xml);
-    if (!urdf) {
+    if (!urdf || !console.messages().empty()) {
       throw RobotError(
           source + ": not a valid URDF: " +
           (console.messages().empty() ? std::string("urdfdom refused it") : console.messages()));
     }
   }
-  return ChainBuilder(*urdf, source, mesh_directory).build(options.tool_link);
+  return ChainBuilder(*urdf, source, mesh_directory, options).build(options.tool_link);
 }
 
 RobotModel load_urdf_file(const std::filesystem::path& path, const UrdfOptions& options) {
   std::ifstream file(path, std::ios::binary);
   if (!file || std::filesystem::is_directory(path)) {
     throw RobotError(path.string() + ": cannot be opened for reading");
+  }
+  std::error_code error;
+  if (const auto bytes = std::filesystem::file_size(path, error); !error && bytes > kMaxUrdfBytes) {
+    throw RobotError(path.string() + ": " + std::to_string(bytes) + " bytes, expected at most " +
+                     std::to_string(kMaxUrdfBytes) + " for a robot description");
   }
   std::ostringstream text;
   text << file.rdbuf();

@@ -4,6 +4,7 @@
 // value refused later can still be named in the file.
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ struct RobotConfig {
   std::string tool_frame;  // the frame the tool hangs from; empty: the last movable link
   std::array<double, 3> tool_point_m{0.0, 0.0, 0.0};
   std::vector<PlacedShape> tool_shapes;  // in the tool frame; they join the robot's geometry
+  // Shapes for URDF links that have no collision geometry, in each link's frame: a moving link
+  // without geometry is refused unless it is named here on purpose.
+  std::map<std::string, std::vector<PlacedShape>> collision_stand_ins;
   SourceLine at;
 };
 
