@@ -101,6 +101,9 @@ TEST(ImageFolderSource, MalformedCsvRowsAreNamedByFileLineAndValue) {
       {"file,time_s\na.png,1\nb.png,2\nc.png,3\n", csv + ":4: file: 'c.png' is not a PNG or PGM"},
       {"file,time_s\na.png,2\nb.png,2\n",
        csv + ":3: time_s: 2 of 'b.png' is not after 2 of line 2"},
+      // A row no image name needs: refused before it is taken apart.
+      {"file,time_s\na.png,1\n" + std::string(5000, 'b') + ".png,2\n",
+       csv + ":3: row: 5006 bytes, expected at most 4096"},
   };
   for (const auto& [text, message] : cases) {
     write_text(csv, text);

@@ -199,7 +199,7 @@ std::vector<BadCase> bad_cases() {
   const Entries good = good_entries();
   const auto m3 = [](const std::string& data) { return matrix(3, 3, data); };
   return {
-      {"not YAML", "%YAML:1.0\n---\n{{{{ not yaml ]]]\n", "(file)", "not valid YAML (OpenCV"},
+      {"not YAML", "%YAML:1.0\n---\n{{{{ not yaml ]]]\n", "(file)", "not valid YAML (line 3"},
       {"no %YAML line", yaml_of(good).substr(10), "(file)",
        "does not begin with \"%YAML:1.0\", expected an OpenCV YAML calibration"},
       {"binary",
@@ -291,6 +291,26 @@ std::vector<BadCase> bad_cases() {
       {"infinite translation",
        yaml_of(with(good, "cell_to_camera_translation_m", matrix(3, 1, "1., -.Inf, 3."))),
        "cell_to_camera_translation_m", "entry (1, 0) is -inf, expected a finite number"},
+      {"a key twice", yaml_of(good) + "image_width: 6400\n", "image_width",
+       "given twice (lines 3 and "},
+      {"a key in a matrix twice",
+       yaml_of(with(good, "camera_matrix", matrix(3, 3, "1") + "\n   rows: 1")), "rows",
+       "given twice"},
+      {"unknown key", yaml_of(with(good, "image_widht", "704")), "image_widht",
+       "unknown key, expected one of image_width"},
+      {"fisheye", yaml_of(with(good, "fisheye_model", "1")), "fisheye_model", "unknown key"},
+      {"nested 100,000 deep",
+       "%YAML:1.0\n---\nimage_width: " + std::string(100000, '[') + std::string(100000, ']') + "\n",
+       "(file)", "nested deeper than 16 levels"},
+      {"nested 17 deep",
+       "%YAML:1.0\n---\nimage_width: " + std::string(17, '[') + std::string(17, ']') + "\n",
+       "(file)", "nested deeper than 16 levels"},
+      {"distortion of 2e9",
+       yaml_of(with(good, "distortion_coefficients", matrix(5, 1, "2e9, 0., 0., 0., 0."))),
+       "distortion_coefficients", "2e+09, expected a value within +-1000 (a radial term k)"},
+      {"camera 1e308 away",
+       yaml_of(with(good, "cell_to_camera_translation_m", matrix(3, 1, "1e308, 0., 0."))),
+       "cell_to_camera_translation_m", "1e+308, expected a value within +-1e+06"},
   };
 }
 

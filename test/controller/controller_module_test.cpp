@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -73,6 +74,81 @@ TEST(ControllerConfig, RefusalsNameTheFieldLineAndValue) {
             std::string::npos);
   EXPECT_NE(refusal("grid: [").find("not valid YAML"), std::string::npos);
   EXPECT_NE(refusal("- 1").find("a YAML map"), std::string::npos);
+}
+
+// Ambiguous or unsafe settings the cell file would refuse: each names the key, the value and what
+// was expected. Each case is the example with one line changed; the example itself loads.
+TEST(ControllerConfig, AmbiguousAndUnsafeSettingsAreRefused) {
+  const std::string text = example();
+  const struct {
+    const char* from;
+    const char* to;
+    const char* expected;
+  } cases[] = {
+      {"  watchdog_ms: 100 ", "  watchdog_ms: 100\n  watchdog_ms: 5000 ",
+       "timing.watchdog_ms: given twice (first on line"},
+      {"  watchdog_ms: 100 ", "  watchdog_msec: 100 ", "timing.watchdog_msec: unknown key"},
+      {"map_store:", "map_storage:", "map_storage: unknown key; expected one of grid, robot"},
+      {"human_speed_m_s: 1.6 ", "human_speed_m_s: 0 ",
+       "safety.human_speed_m_s: is '0'; expected a number from 1.6 to 10"},
+      {"human_speed_m_s: 1.6 ", "human_speed_m_s: 1.2 ", "expected a number from 1.6 to 10"},
+      {"min_healthy_cameras: 2 ", "min_healthy_cameras: 0 ",
+       "safety.min_healthy_cameras: is '0'; expected 1 to 64"},
+      {"listen: 127.0.0.1:47701", "listen: 127.0.0.1:1e999", "link.listen: is '127.0.0.1:1e999'"},
+      {"listen: 127.0.0.1:47701", "listen: 127.0.0.1:42286abc", "link.listen: is"},
+      {"listen: 127.0.0.1:47701", "listen: 127.0.0.1:0", "with a port of 1..65535"},
+      {"coprocessor: 127.0.0.1:47700", "coprocessor: 127.0.0.1:65536", "link.coprocessor: is"},
+      {"coprocessor: 127.0.0.1:47700", "coprocessor: 327.0.0.1:47700", "link.coprocessor: is"},
+      {"    - {lo_rad: -2.792527, hi_rad: 2.792527, l_m: 1.524, discretised: true}",
+       "    - {lo_rad: -2.792527, hi_rad: 2.792527, l_m: 1.524, discretised: true, l_m: 0.1}",
+       "grid.joints[0].l_m: given twice"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = refusal(replaced(text, c.from, c.to));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.to << ": " << message;
+    EXPECT_EQ(message.rfind("controller.yaml:", 0), 0u) << message;
+  }
+  // A slower walking speed with its reason is taken; the reason may not be empty.
+  const ControllerConfig slow = parse_controller_config(
+      replaced(text, "human_speed_m_s: 1.6 ",
+               "human_speed_reason: seated operators behind a fence\n  human_speed_m_s: 1.0 "),
+      "controller.yaml");
+  EXPECT_EQ(slow.safety.human_speed_m_s, 1.0);
+  EXPECT_NE(refusal(replaced(text, "human_speed_m_s: 1.6 ",
+                             "human_speed_reason: ''\n  human_speed_m_s: 1.0 "))
+                .find("safety.human_speed_reason: is empty"),
+            std::string::npos);
+}
+
+// A file cut short anywhere (a copy interrupted, an editor's crash) is read or refused with the
+// reader's own error, never another exception (exit 70 in the program).
+TEST(ControllerConfig, EveryPrefixOfTheExampleIsReadOrRefusedByName) {
+  const std::string text = example();
+  for (std::size_t cut = 0; cut <= text.size(); ++cut) {
+    try {
+      (void)parse_controller_config(text.substr(0, cut), "controller.yaml");
+    } catch (const ControllerConfigError&) {
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << "cut at byte " << cut << ": " << error.what() << "\n...\n"
+                    << text.substr(cut > 200 ? cut - 200 : 0, cut > 200 ? 200 : cut);
+      break;
+    }
+  }
+}
+
+TEST(ControllerConfig, AFileNestedOrSizedBeyondAnyControllerIsRefused) {
+  const std::string deep = refusal("grid: " + std::string(100000, '[') + std::string(100000, ']'));
+  EXPECT_NE(deep.find("nested deeper than"), std::string::npos) << deep;
+  const std::string path = ::testing::TempDir() + "/safecell-huge-controller.yaml";
+  std::ofstream(path) << "# " << std::string(2u << 20, 'x') << "\n";
+  try {
+    (void)load_controller_config(path);
+    ADD_FAILURE() << "a 2 MB controller file was read";
+  } catch (const ControllerConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("expected at most 1048576"), std::string::npos)
+        << error.what();
+  }
+  std::remove(path.c_str());
 }
 
 // Only grid and robot are required; a file without the other sections takes their defaults

@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "model_fixture.hpp"
+#include "safecell/base/crc32.hpp"
 #include "safecell/lut_build/cell_table_builder.hpp"
 #include "safecell/lut_build/model_luts.hpp"
 #include "safecell/lut_files/lut_cache.hpp"
@@ -199,6 +201,39 @@ TEST_F(LutFile, DamagedAndForeignFilesAreRefused) {
 
   write(path, good);
   EXPECT_EQ(refusal(path, set_->fingerprint), "");
+}
+
+// A header whose counts are absurd but whose checksum holds (written so on purpose, or by a bug) is
+// refused before anything is sized from it: `luts info` once ended in std::bad_alloc (exit 70).
+TEST_F(LutFile, AHeaderCountingMoreCamerasThanSectionsIsRefusedBeforeAllocating) {
+  const fs::path path = folder_ / "luts.sclut";
+  write_lut_file(path, *set_);
+  const std::string good = read(path);
+  constexpr std::size_t kCameraCountOffset = 44;  // after magic, version, sizes, fingerprints,
+  constexpr std::size_t kChecksumOffset = 72;     // source, columns and rows
+  const auto with_cameras = [&](std::uint32_t count) {
+    std::string bytes = good;
+    std::memcpy(bytes.data() + kCameraCountOffset, &count, sizeof(count));
+    std::memset(bytes.data() + kChecksumOffset, 0, 4);
+    Crc32 crc;
+    crc.update(bytes.data(), bytes.size());
+    const std::uint32_t checksum = crc.value();
+    std::memcpy(bytes.data() + kChecksumOffset, &checksum, sizeof(checksum));
+    return bytes;
+  };
+  write(path, with_cameras(4));  // control: the true count with a recomputed checksum loads
+  EXPECT_EQ(refusal(path, set_->fingerprint), "");
+  EXPECT_EQ(read_lut_file_summary(path).camera_count, 4U);
+  write(path, with_cameras(0xFFFFFFFFU));
+  EXPECT_NE(refusal(path, std::nullopt).find("the header says 4294967295 cameras"),
+            std::string::npos)
+      << refusal(path, std::nullopt);
+  try {
+    (void)read_lut_file_summary(path);
+    ADD_FAILURE() << "the summary of a file of 2^32 - 1 cameras was read";
+  } catch (const LutFileError& error) {
+    EXPECT_NE(std::string(error.what()).find("4294967295 cameras"), std::string::npos);
+  }
 }
 
 TEST_F(LutFile, CacheBuildsOnceThenLoadsAndReplacesADamagedFile) {

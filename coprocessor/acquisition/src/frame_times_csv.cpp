@@ -9,6 +9,10 @@
 namespace safecell {
 namespace {
 
+// An hour of four cameras at 30 fps is some 15 MB of rows; a row names one image file.
+constexpr std::uintmax_t kMaxCsvBytes = std::uintmax_t{256} << 20;
+constexpr std::size_t kMaxRowBytes = 4096;
+
 std::string without_carriage_return(std::string text) {
   if (!text.empty() && text.back() == '\r') text.pop_back();
   return text;
@@ -17,6 +21,13 @@ std::string without_carriage_return(std::string text) {
 }  // namespace
 
 std::map<std::string, FrameTime> read_frame_times_csv(const std::filesystem::path& csv) {
+  std::error_code size_error;
+  if (const auto bytes = std::filesystem::file_size(csv, size_error);
+      !size_error && bytes > kMaxCsvBytes) {
+    throw_acquisition_error(csv, 0, "file",
+                            std::to_string(bytes) + " bytes, expected at most " +
+                                std::to_string(kMaxCsvBytes) + " for a list of frame times");
+  }
   std::ifstream in(csv);
   if (!in) throw_acquisition_error(csv, 0, "file", "cannot be read");
   std::string text;
@@ -27,6 +38,11 @@ std::map<std::string, FrameTime> read_frame_times_csv(const std::filesystem::pat
   std::map<std::string, FrameTime> rows;
   while (std::getline(in, text)) {
     ++line;
+    if (text.size() > kMaxRowBytes) {
+      throw_acquisition_error(csv, line, "row",
+                              std::to_string(text.size()) + " bytes, expected at most " +
+                                  std::to_string(kMaxRowBytes) + " ('file,time_s')");
+    }
     text = without_carriage_return(text);
     if (text.empty()) continue;
     const std::size_t comma = text.find(',');

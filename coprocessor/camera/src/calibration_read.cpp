@@ -34,17 +34,15 @@ Eigen::Isometry3d cell_pose_of(const CalibrationReader& reader, const std::strin
   return cell_to_camera;
 }
 
-cv::FileStorage open_storage(const std::string& source, const std::string& yaml,
-                             const std::string& expected) {
-  cv::FileStorage storage(
-      yaml, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-  if (!storage.isOpened())
-    throw_camera_error(source, "(file)", "cannot be parsed, expected " + expected);
-  return storage;
-}
-
 PinholeCamera read_camera(const CalibrationReader& reader, const std::string& source,
                           std::string name) {
+  reader.refuse_unknown_keys({"image_width", "image_height", "camera_matrix",
+                              "distortion_coefficients", kRotationKey, kRvecKey, kTranslationKey,
+                              // What OpenCV's calibration programs write beside: not read.
+                              "calibration_time", "nframes", "nr_of_frames", "board_width",
+                              "board_height", "square_size", "aspect_ratio", "fix_aspect_ratio",
+                              "flags", "avg_reprojection_error", "per_view_reprojection_errors",
+                              "extrinsic_parameters", "image_points", "grid_points"});
   CameraIntrinsics intrinsics;
   intrinsics.width_px = reader.image_size("image_width");
   intrinsics.height_px = reader.image_size("image_height");
@@ -64,7 +62,7 @@ PinholeCamera read_camera_calibration(const std::filesystem::path& path, std::st
   const std::string expected = "an OpenCV YAML calibration";
   const std::string yaml = opencv_yaml_text(path, expected);
   try {
-    const cv::FileStorage storage = open_storage(source, yaml, expected);
+    const cv::FileStorage storage = open_opencv_yaml(source, yaml, expected);
     return read_camera(CalibrationReader(source, storage.root()), source, std::move(name));
   } catch (const cv::Exception& error) {
     throw_camera_error(source, "(file)",
@@ -78,7 +76,7 @@ Eigen::Isometry3d read_cell_pose(const std::filesystem::path& path) {
                                std::string(kTranslationKey) + ")";
   const std::string yaml = opencv_yaml_text(path, expected);
   try {
-    const cv::FileStorage storage = open_storage(source, yaml, expected);
+    const cv::FileStorage storage = open_opencv_yaml(source, yaml, expected);
     // Intrinsics that pass the checks: only the pose's own values are checked here.
     CameraIntrinsics any_lens;
     any_lens.fx_px = any_lens.fy_px = 100.0;

@@ -12,11 +12,20 @@ namespace {
 
 // Calibration files written with fewer digits stay usable; the rotation is then re-orthonormalised.
 constexpr double kRotationTolerance = 1e-6;
+// Bounds beyond any camera of a robot cell, so that a value off by powers of ten is refused:
+// sensors up to 32,768 px a side; radial terms of wide-angle fits stay within tens, tangential
+// ones within hundredths; a translation within 1e6 of the file's units (metres here, millimetres
+// in MC-Calib's files; where a camera may stand in its cell is the cell's check).
+constexpr int kMaxImageSide_px = 32768;
+constexpr double kMaxRadialTerm = 1e3;
+constexpr double kMaxTangentialTerm = 1.0;
+constexpr double kMaxTranslation = 1e6;
 
 void check_size(const std::string& source, const std::string& field, int size_px) {
-  if (size_px <= 0) {
+  if (size_px <= 0 || size_px > kMaxImageSide_px) {
     throw_camera_error(source, field,
-                       std::to_string(size_px) + " px, expected a whole number of pixels > 0");
+                       std::to_string(size_px) + " px, expected a whole number of pixels in 1.." +
+                           std::to_string(kMaxImageSide_px));
   }
 }
 
@@ -30,6 +39,16 @@ void check_focal_length(const std::string& source, const std::string& field, dou
 void check_finite(const std::string& source, const std::string& field, double value) {
   if (!std::isfinite(value)) {
     throw_camera_error(source, field, number_text(value) + ", expected a finite number");
+  }
+}
+
+void check_within(const std::string& source, const std::string& field, double value, double bound,
+                  const char* unit) {
+  check_finite(source, field, value);
+  if (std::abs(value) > bound) {
+    throw_camera_error(
+        source, field,
+        number_text(value) + ", expected a value within +-" + number_text(bound) + unit);
   }
 }
 
@@ -88,9 +107,16 @@ void check_camera_values(const std::string& source, const CameraFieldNames& name
   check_finite(source, names.cx, intrinsics.cx_px);
   check_finite(source, names.cy, intrinsics.cy_px);
   const LensDistortion& d = intrinsics.distortion;
-  for (const double k : {d.k1, d.k2, d.p1, d.p2, d.k3}) check_finite(source, names.distortion, k);
+  for (const double k : {d.k1, d.k2, d.k3}) {
+    check_within(source, names.distortion, k, kMaxRadialTerm, " (a radial term k)");
+  }
+  for (const double p : {d.p1, d.p2}) {
+    check_within(source, names.distortion, p, kMaxTangentialTerm, " (a tangential term p)");
+  }
   check_rotation(source, names.rotation, rotation);
-  for (const double t : translation_m) check_finite(source, names.translation, t);
+  for (const double t : translation_m) {
+    check_within(source, names.translation, t, kMaxTranslation, "");
+  }
   check_lens_covers_image(source, names.distortion, intrinsics);
 }
 

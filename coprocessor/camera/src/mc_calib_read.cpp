@@ -88,11 +88,7 @@ std::vector<McCalibCamera> read_mc_calib_cameras(const std::filesystem::path& pa
   }
   const std::string yaml = opencv_yaml_text(path, kExpected);
   try {
-    const cv::FileStorage storage(
-        yaml, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-    if (!storage.isOpened()) {
-      throw_camera_error(source, "(file)", std::string("cannot be parsed, expected ") + kExpected);
-    }
+    const cv::FileStorage storage = open_opencv_yaml(source, yaml, kExpected);
     const CalibrationReader root(source, storage.root());
     const cv::FileNode count = root.require("nb_camera", "the number of cameras");
     if (!count.isInt() || static_cast<int>(count) < 1 || static_cast<int>(count) > kMaxCameras) {

@@ -44,6 +44,11 @@ std::string shown(const cv::FileNode& node);
 // CameraError naming the file and `expected` (what the file should have been).
 std::string opencv_yaml_text(const std::filesystem::path& path, const std::string& expected);
 
+// OpenCV's reader over that text. Throws CameraError when it cannot parse it, whatever OpenCV
+// throws (its parser lets std::length_error out on some malformed keys, not only cv::Exception).
+cv::FileStorage open_opencv_yaml(const std::string& source, const std::string& yaml,
+                                 const std::string& expected);
+
 class CalibrationReader {
  public:
   CalibrationReader(std::string source, const cv::FileNode& root)
@@ -58,6 +63,19 @@ class CalibrationReader {
   }
 
   bool has(const char* key) const { return !root_[key].isNone(); }
+
+  // A key outside `known` is refused: a misspelt key would otherwise be passed over.
+  void refuse_unknown_keys(std::initializer_list<const char*> known) const {
+    for (const std::string& key : root_.keys()) {
+      bool found = false;
+      std::string expected;
+      for (const char* name : known) {
+        found = found || key == name;
+        expected += (expected.empty() ? "" : ", ") + std::string(name);
+      }
+      if (!found) fail(key, "unknown key, expected one of " + expected);
+    }
+  }
 
   cv::FileNode require(const char* key, const std::string& expected) const {
     const cv::FileNode node = root_[key];

@@ -189,6 +189,15 @@ Header checked_header(const std::filesystem::path& path, const Mapping& mapping)
       table_end < header.section_table_offset) {
     throw LutFileError(path, "section table outside the file");
   }
+  // Every camera has sections of its own (its name at least), each a table entry: a count above
+  // the entries is a damaged header, and would size what is allocated from it.
+  if (header.camera_count >= kNoCamera || header.camera_count > header.section_count) {
+    throw LutFileError(
+        path, "the header says " + std::to_string(header.camera_count) +
+                  " cameras, expected at most " +
+                  std::to_string(std::min<std::uint32_t>(header.section_count, kNoCamera - 1U)) +
+                  " (one per section of the file's " + std::to_string(header.section_count) + ")");
+  }
   return header;
 }
 
