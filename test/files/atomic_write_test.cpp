@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -61,6 +64,24 @@ TEST_F(AtomicWrite, FailureNamesThePathAndKeepsTheOldFile) {
   EXPECT_THROW(write_file_atomically(blocked, "data"), FileError);
   EXPECT_TRUE(std::filesystem::is_directory(blocked));
   EXPECT_EQ(files_in_directory(), 1u);
+}
+
+// A writer killed while writing leaves its temporary file: the next write in the folder removes it,
+// but never one whose writer still runs, nor a file that only looks alike.
+TEST_F(AtomicWrite, TemporariesOfKilledWritersAreRemovedThoseOfLiveOnesKept) {
+  const pid_t dead = ::fork();
+  ASSERT_GE(dead, 0);
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);  // reaped: its id names no process now
+  const auto stale = directory_ / (".0x1234.sclut.tmp." + std::to_string(dead) + ".0");
+  const auto live = directory_ / (".0x1234.sclut.tmp." + std::to_string(::getppid()) + ".3");
+  const auto alike = directory_ / (".notes.tmp." + std::to_string(dead) + ".x");
+  for (const auto& path : {stale, live, alike}) std::ofstream(path) << "partial";
+  write_file_atomically(directory_ / "other.sclut", "tables");
+  EXPECT_FALSE(std::filesystem::exists(stale));
+  EXPECT_TRUE(std::filesystem::exists(live));
+  EXPECT_TRUE(std::filesystem::exists(alike));
+  EXPECT_EQ(files_in_directory(), 3u);
 }
 
 }  // namespace

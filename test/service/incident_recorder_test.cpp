@@ -152,6 +152,7 @@ TEST(IncidentRecorder, AFolderThatCannotBeWrittenDropsTheIncidentOnly) {
   EXPECT_TRUE(outcomes[0].folder.empty());
   EXPECT_NE(outcomes[0].error.find("not written"), std::string::npos) << outcomes[0].error;
   EXPECT_EQ(recorder.incidents_written(), 0U);
+  EXPECT_EQ(recorder.incidents_not_written(), 1U) << "the run must be able to say so";
   EXPECT_TRUE(recorder.poll(2.0).empty()) << "the failed incident is dropped, not retried";
   EXPECT_TRUE(recorder.flush().empty());
 
@@ -164,6 +165,7 @@ TEST(IncidentRecorder, AFolderThatCannotBeWrittenDropsTheIncidentOnly) {
   ASSERT_EQ(outcomes[0].error, "");
   EXPECT_TRUE(fs::exists(outcomes[0].folder / "incident.json"));
   EXPECT_EQ(recorder.incidents_written(), 1U);
+  EXPECT_EQ(recorder.incidents_not_written(), 1U);
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(blocked)) ++entries;
   EXPECT_EQ(entries, 1U) << "a partial folder was left behind";

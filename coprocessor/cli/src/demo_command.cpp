@@ -14,10 +14,12 @@
 #include "demo_report.hpp"
 #include "incident_feed.hpp"
 #include "safecell/cell/default_cell.hpp"
+#include "safecell/cli/cli_app.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/cli/validate_command.hpp"
 #include "safecell/closed_loop/controller_session.hpp"
 #include "safecell/closed_loop/live_simulated_cameras.hpp"
+#include "safecell/files/atomic_write.hpp"
 #include "safecell/files/read_file.hpp"
 #include "safecell/robot/kinematics.hpp"
 #include "safecell/separation/protective_separation.hpp"
@@ -268,6 +270,7 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   if (incidents) {
     err << incidents->finish() << " incident(s) in " << (out_dir / "incidents").string()
         << " (safecell replay FOLDER runs one again)\n";
+    run.incidents_not_written = incidents->not_written();
   }
   if (run.controller_died) {
     err << "the controller exited during the demo (code "
@@ -277,9 +280,20 @@ int run_demo(const DemoOptions& options, std::ostream& out, std::ostream& err) {
   while (!record.joints.empty() && record.joints.back().time_s > run_end_s) {
     record.joints.pop_back();
   }
-  const bool safe =
-      write_demo_report(out_dir, sensing, world, session.setup().goals_rad, run, out, err);
-  return safe ? 0 : kExitValidationFailed;
+  bool safe = false;
+  try {
+    safe = write_demo_report(out_dir, sensing, world, session.setup().goals_rad, run, out, err);
+  } catch (const FileError& error) {
+    err << "error: the demo's report was not written: " << error.what() << '\n';
+    return kExitEvidenceNotWritten;
+  }
+  if (!safe) return kExitValidationFailed;
+  if (run.incidents_not_written > 0) {
+    err << "error: " << run.incidents_not_written
+        << " incident(s) could not be written (see above); the run's evidence is incomplete\n";
+    return kExitEvidenceNotWritten;
+  }
+  return 0;
 }
 
 void add_demo_command(CLI::App& app, CommandLine& line) {

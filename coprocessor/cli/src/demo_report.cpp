@@ -84,6 +84,7 @@ bool write_demo_report(const std::filesystem::path& folder, const SimulatedSensi
   summary["slowdowns"] = states.slowdowns;
   summary["faults"] = states.faults;
   summary["faults_acknowledged"] = run.acknowledged_s.size();
+  summary["incidents_not_written"] = run.incidents_not_written;
   summary["stop_explanations"] = nlohmann::ordered_json::array();
   for (const IncidentExplanation& stop : run.stop_explanations) {
     summary["stop_explanations"].push_back({{"time_s", stop.time_s}, {"text", stop.text}});

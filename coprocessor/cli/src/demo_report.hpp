@@ -70,6 +70,7 @@ struct DemoRun {
   std::vector<IncidentExplanation> stop_explanations;  // why the controller slowed or stopped
   NearPersonFreeSpace near_person;
   bool controller_died = false;
+  std::size_t incidents_not_written = 0;  // could not be written (the disk) or dropped
   std::optional<int> controller_exit;
 };
 

@@ -28,6 +28,8 @@ class IncidentFeed {
   void stop_explanation(double time_s, const std::string& text);
   // The end of the run: the incident being recorded is written; returns the incidents written.
   std::size_t finish();
+  // Incidents that could not be written (finish() first).
+  [[nodiscard]] std::size_t not_written() const { return recorder_.incidents_not_written(); }
 
  private:
   void report(const std::vector<IncidentOutcome>& outcomes);

@@ -19,6 +19,7 @@
 #include "safecell/acquisition/exposure_sync.hpp"
 #include "safecell/cell/cell_file.hpp"
 #include "safecell/cell/cell_grid.hpp"
+#include "safecell/cli/cli_app.hpp"
 #include "safecell/cli/text_table.hpp"
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/files/read_file.hpp"
@@ -195,6 +196,7 @@ struct RunFigures {
   std::size_t separation_slowed_cycles = 0;  // maps sent with a speed limit, not forbidden whole
   std::size_t cycles_short_of_views = 0;     // fewer known views than the camera threshold
   std::size_t incidents = 0;                 // folders the incident recorder wrote
+  std::size_t incidents_not_written = 0;     // could not be written (the disk) or dropped
   std::size_t new_sessions = 0;              // opened after the controller fell silent
   std::size_t stops_explained = 0;           // slow-downs and stops the service explained
   std::map<std::string, std::size_t> all_forbidden_because;  // cycles per reason
@@ -220,6 +222,7 @@ void write_run_summary(const fs::path& file, const RunFigures& figures, double s
   summary["fusion_ms_p99"] = percentile(figures.fusion_ms, 0.99);
   summary["controller_faults"] = link.controller_faults().size();
   summary["incidents"] = figures.incidents;
+  summary["incidents_not_written"] = figures.incidents_not_written;
   summary["new_sessions"] = figures.new_sessions;
   summary["stops_explained"] = figures.stops_explained;
   summary["stopped_because"] = stopped_because;
@@ -396,8 +399,17 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
   const bool asked = stop_request.send("safecell run stopped: " + stopped_because);
   if (asked) service.serve_link(Clock::now() + std::chrono::milliseconds(50));
   const double seconds = seconds_since_start(steady_now_ns());
-  if (incidents) figures.incidents = incidents->finish();
-  write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, cameras, link);
+  if (incidents) {
+    figures.incidents = incidents->finish();
+    figures.incidents_not_written = incidents->not_written();
+  }
+  try {
+    write_run_summary(out_dir / "run_summary.json", figures, seconds, stopped_because, cameras,
+                      link);
+  } catch (const FileError& error) {
+    err << "error: the run's summary was not written: " << error.what() << '\n';
+    return kExitEvidenceNotWritten;
+  }
   out << "stopped: " << stopped_because
       << (asked ? "; the controller was asked to stop the robot\n"
                 : "; no session was open to ask the controller (its watchdog holds the robot)\n")
@@ -405,6 +417,11 @@ int run_service(const RunOptions& options, std::ostream& out, std::ostream& err)
       << figures.all_forbidden_cycles << ", slowed by the protective separation "
       << figures.separation_slowed_cycles << ", short of views " << figures.cycles_short_of_views
       << "; summary " << (out_dir / "run_summary.json").string() << '\n';
+  if (figures.incidents_not_written > 0) {
+    err << "error: " << figures.incidents_not_written
+        << " incident(s) could not be written (see above); the run's evidence is incomplete\n";
+    return kExitEvidenceNotWritten;
+  }
   return 0;
 }
 

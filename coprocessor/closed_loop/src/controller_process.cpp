@@ -3,12 +3,14 @@
 #include "safecell/closed_loop/controller_setup.hpp"
 
 #include <signal.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <cerrno>
 
 #include <boost/process/args.hpp>
 #include <boost/process/child.hpp>
+#include <boost/process/extend.hpp>
 #include <boost/process/io.hpp>
 #include <boost/process/pipe.hpp>
 #include <stdexcept>
@@ -26,6 +28,22 @@ struct ControllerProcess::Child {
   boost::process::child process;
 };
 
+namespace {
+
+// The program must not outlive this process: a `safecell demo` killed with SIGKILL left
+// safecell-controller running, at real-time priority, holding its UDP port. The kernel sends it
+// SIGTERM (it stops the robot and exits) when the thread that started it ends (PR_SET_PDEATHSIG:
+// the thread, not the process; every caller starts it from its main thread). A parent that died
+// before the setting took hold is seen in the parent id. Runs in the child between fork and exec.
+auto die_with_parent() {
+  const pid_t parent = ::getpid();
+  return boost::process::extend::on_exec_setup([parent](auto& /*executor*/) {
+    if (::prctl(PR_SET_PDEATHSIG, SIGTERM) != 0 || ::getppid() != parent) ::_exit(127);
+  });
+}
+
+}  // namespace
+
 ControllerProcess::ControllerProcess(const std::filesystem::path& program,
                                      const std::vector<std::string>& args,
                                      const std::filesystem::path& log_file,
@@ -37,15 +55,15 @@ ControllerProcess::ControllerProcess(const std::filesystem::path& program,
   if (channel == ProcessChannel::kCommandPipes) {
     // A program that has died closes its pipe: writing to it must fail, not kill this process.
     ::signal(SIGPIPE, SIG_IGN);
-    child_->process =
-        bp::child(program.string(), bp::args(args), bp::std_out > child_->answers,
-                  bp::std_err > log_file.string(), bp::std_in < child_->commands, error);
+    child_->process = bp::child(program.string(), bp::args(args), bp::std_out > child_->answers,
+                                bp::std_err > log_file.string(), bp::std_in < child_->commands,
+                                die_with_parent(), error);
     // Boost.Process has handed the program its ends and closed them here: the program's exit
     // closes `answers` (read_line() then ends).
   } else {
     child_->process =
         bp::child(program.string(), bp::args(args), (bp::std_out & bp::std_err) > log_file.string(),
-                  bp::std_in.close(), error);
+                  bp::std_in.close(), die_with_parent(), error);
   }
   if (error) {
     throw ClosedLoopSetupError("could not start " + program.string() + ": " + error.message());
@@ -81,6 +99,8 @@ std::optional<std::string> ControllerProcess::read_line() {
 }
 
 ControllerProcess::~ControllerProcess() { (void)stop(std::chrono::milliseconds(2000)); }
+
+int ControllerProcess::pid() const { return child_->process.id(); }
 
 bool ControllerProcess::running() {
   if (!child_ || exit_code_) return false;

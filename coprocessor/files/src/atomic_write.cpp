@@ -1,11 +1,14 @@
 #include "safecell/files/atomic_write.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -62,7 +65,35 @@ void write_all(const FileHandle& file, std::string_view text, const std::filesys
   }
 }
 
+// The id of the process that wrote `name` if it is one of create_temporary()'s files
+// (".<file name>.tmp.<pid>.<n>"), else nullopt.
+std::optional<pid_t> writer_of(const std::string& name) {
+  const std::size_t tmp = name.rfind(".tmp.");
+  if (name.empty() || name[0] != '.' || tmp == std::string::npos || tmp == 0) return std::nullopt;
+  const char* begin = name.data() + tmp + 5;
+  const char* end = name.data() + name.size();
+  pid_t pid = 0;
+  unsigned counter = 0;
+  const auto [dot, pid_error] = std::from_chars(begin, end, pid);
+  if (pid_error != std::errc{} || dot == end || *dot != '.' || pid <= 0) return std::nullopt;
+  const auto [stop, counter_error] = std::from_chars(dot + 1, end, counter);
+  if (counter_error != std::errc{} || stop != end) return std::nullopt;
+  return pid;
+}
+
 }  // namespace
+
+void remove_stale_temporaries(const std::filesystem::path& directory) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    const auto pid = writer_of(entry.path().filename().string());
+    // Only a writer that no longer exists: a running one (or one whose id was reused) keeps it.
+    if (pid && *pid != ::getpid() && ::kill(*pid, 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      std::filesystem::remove(entry.path(), ignored);
+    }
+  }
+}
 
 void sync_directory(const std::filesystem::path& directory) {
   const FileHandle handle(::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
@@ -70,6 +101,8 @@ void sync_directory(const std::filesystem::path& directory) {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  remove_stale_temporaries(path.has_parent_path() ? path.parent_path()
+                                                  : std::filesystem::path("."));
   int fd = -1;
   const std::filesystem::path temporary = create_temporary(path, fd);
   try {

@@ -268,6 +268,7 @@ std::vector<IncidentOutcome> IncidentRecorder::flush() {
 
 std::vector<IncidentOutcome> IncidentRecorder::collect(bool wait) {
   std::vector<IncidentOutcome> outcomes = std::move(dropped_);
+  not_written_ += outcomes.size();
   dropped_.clear();
   for (auto write = writes_.begin(); write != writes_.end();) {
     if (!wait && write->wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
@@ -275,7 +276,7 @@ std::vector<IncidentOutcome> IncidentRecorder::collect(bool wait) {
       continue;
     }
     outcomes.push_back(write->get());
-    if (outcomes.back().error.empty()) ++written_;
+    ++(outcomes.back().error.empty() ? written_ : not_written_);
     write = writes_.erase(write);
   }
   return outcomes;

@@ -1,7 +1,8 @@
 #pragma once
 // safecell-controller as a child process: started with its configuration file, its output into
 // a log file; stopped with SIGTERM (the module stops the robot and exits), killed only when it
-// does not exit in time. The destructor stops a process still running.
+// does not exit in time. The destructor stops a process still running, and the program gets
+// SIGTERM when this process dies, however it dies: it never outlives it.
 
 #include <chrono>
 #include <cstdint>
@@ -30,6 +31,7 @@ class ControllerProcess {
   ControllerProcess& operator=(const ControllerProcess&) = delete;
 
   [[nodiscard]] bool running();
+  [[nodiscard]] int pid() const;
   // kCommandPipes only: a line to the program's stdin (flushed), the next line of its stdout
   // (blocks; nullopt once it has closed it).
   void write_line(const std::string& line);

@@ -25,7 +25,13 @@ class FileError : public InputError {
 
 // Writes `bytes` to a new temporary file beside `path`, flushes it to disk, and renames it over
 // `path`. Throws FileError ("<path>: <problem>") on failure; the temporary file is then removed.
+// Temporary files left in its folder by writers that were killed are removed first.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// Removes the temporary files of write_file_atomically() in `directory` (".<name>.tmp.<pid>.<n>")
+// whose writing process no longer exists: what a killed writer left. A file another running
+// process writes is kept.
+void remove_stale_temporaries(const std::filesystem::path& directory);
 
 // Flushes a directory's entries (files and folders created or renamed in it) to disk, so that
 // they survive a power cut; best effort, as not every file system allows it.

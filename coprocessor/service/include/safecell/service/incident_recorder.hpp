@@ -70,6 +70,8 @@ class IncidentRecorder {
 
   // Incidents written whole so far (outcomes returned without an error).
   [[nodiscard]] std::size_t incidents_written() const { return written_; }
+  // Incidents that could not be written (the disk) or were dropped (writers busy).
+  [[nodiscard]] std::size_t incidents_not_written() const { return not_written_; }
 
   static constexpr std::size_t kMaxWritesInFlight = 2;
 
@@ -100,6 +102,7 @@ class IncidentRecorder {
   std::vector<std::string> causes_;
   std::size_t handed_over_ = 0;
   std::size_t written_ = 0;
+  std::size_t not_written_ = 0;
   std::vector<IncidentOutcome> dropped_;
   std::vector<std::future<IncidentOutcome>> writes_;
 };
