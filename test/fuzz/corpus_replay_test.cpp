@@ -40,6 +40,12 @@ void replay(const std::string& target, int (*run)(const std::uint8_t*, std::size
 TEST(FuzzCorpus, FrameChecker) { replay("frame_checker", &fuzz::frame_checker); }
 TEST(FuzzCorpus, NanopbDecode) { replay("nanopb_decode", &fuzz::nanopb_decode); }
 TEST(FuzzCorpus, MapChunkApply) { replay("map_chunk_apply", &fuzz::map_chunk_apply); }
+#ifdef SAFECELL_FUZZ_FILE_LOADERS
+TEST(FuzzCorpus, CellFile) { replay("cell_file", &fuzz::cell_file); }
+TEST(FuzzCorpus, Urdf) { replay("urdf", &fuzz::urdf); }
+TEST(FuzzCorpus, Calibration) { replay("calibration", &fuzz::calibration); }
+TEST(FuzzCorpus, ControllerConfig) { replay("controller_config", &fuzz::controller_config); }
+#endif
 
 }  // namespace
 }  // namespace safecell

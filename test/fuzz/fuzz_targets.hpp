@@ -1,5 +1,6 @@
 #pragma once
-// The libFuzzer targets of the link's hostile-input paths. Each is a plain function here so that
+// The libFuzzer targets of the link's hostile-input paths and of the file loaders (the files an
+// integrator writes: cell, URDF, calibration, controller). Each is a plain function here so that
 // test_fuzz_corpus replays the kept corpora with the normal tests; the fuzz preset builds each
 // into a libFuzzer program (SAFECELL_FUZZ_ENTRY selects the one). A target returns 0 and aborts
 // (SAFECELL_ASSERT, or a sanitizer) when an invariant breaks.
@@ -15,6 +16,13 @@ int frame_checker(const std::uint8_t* data, std::size_t size);
 int nanopb_decode(const std::uint8_t* data, std::size_t size);
 // Map chunks (keyframes, deltas, any header) applied by the controller's assembler.
 int map_chunk_apply(const std::uint8_t* data, std::size_t size);
+
+// The file loaders (coprocessor builds only): any bytes as the file; a refusal is the loader's
+// own error type, anything else is a finding.
+int cell_file(const std::uint8_t* data, std::size_t size);
+int urdf(const std::uint8_t* data, std::size_t size);
+int calibration(const std::uint8_t* data, std::size_t size);
+int controller_config(const std::uint8_t* data, std::size_t size);
 
 }  // namespace safecell::fuzz
 
