@@ -214,6 +214,38 @@ TEST(CellModel, UnusableCamerasObstaclesAndThresholdsAreNamed) {
             "cell.yaml:11: size_m: value 0.000000, expected inside dimensions above 0 m");
 }
 
+// Cells the programs could not serve or that protect nobody are refused when they load: cameras
+// of different image sizes (the feature grid was the last camera's, and the table builds ended in
+// exit 70), and a camera where none of this cell can hang (a pose file of camera-to-cell).
+TEST(CellModel, CamerasOfTwoImageSizesOrOutsideTheCellAreRefused) {
+  const std::string two = std::string(kBuiltinCell) +
+                          "cameras:\n  - {name: a, look_at: {position_m: [2, 2, 3], target_m: [0, "
+                          "0, 0], horizontal_fov_deg: 75, size_px: [704, 576]}}\n"
+                          "  - {name: b, look_at: {position_m: [-2, 2, 3], target_m: [0, 0, 0], "
+                          "horizontal_fov_deg: 75, size_px: [704, 576]}}\n";
+  EXPECT_EQ(load_cell_model(parse_cell_yaml(two, "cell.yaml")).cameras.size(), 2u);
+  EXPECT_EQ(model_error_of(replaced(two,
+                                    "[-2, 2, 3], target_m: [0, 0, 0], horizontal_fov_deg: "
+                                    "75, size_px: [704, 576]",
+                                    "[-2, 2, 3], target_m: [0, 0, 0], horizontal_fov_deg: 75, "
+                                    "size_px: [640, 480]")),
+            "cell.yaml:13: cameras[1]: 'b' gives 640 x 480 px images, but 'a' gives 704 x 576 "
+            "px; expected every camera of a cell to give images of one size");
+  // The default cell is 4 x 4 x 3 m: 4.1 m up is above the ceiling by more than 1 m, and so is a
+  // camera under the floor or 4.5 m beside the centre line.
+  for (const char* place : {"[2, 2, 4.1]", "[2, 2, -0.5]", "[4.5, 0, 2]"}) {
+    const std::string message = model_error_of(replaced(two, "[2, 2, 3]", place));
+    EXPECT_EQ(message.rfind("cell.yaml:12: cameras[0]: 'a' has its optical centre at (", 0), 0u)
+        << message;
+    EXPECT_NE(message.find("camera-to-cell instead of cell-to-camera"), std::string::npos);
+  }
+  // Control: 0.9 m above the ceiling and 1.9 m outside a wall are places a camera may hang.
+  EXPECT_EQ(
+      load_cell_model(parse_cell_yaml(replaced(two, "[2, 2, 3]", "[3.9, 2, 3.9]"), "cell.yaml"))
+          .cameras.size(),
+      2u);
+}
+
 TEST(CellModel, ToolShapesJoinTheRobotAndItsLeverArms) {
   const std::string with_tool =
       replaced(kBuiltinCell, "tool: {frame: flange}",

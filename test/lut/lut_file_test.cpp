@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +12,7 @@
 
 #include "model_fixture.hpp"
 #include "safecell/base/crc32.hpp"
+#include "safecell/errors/input_error.hpp"
 #include "safecell/lut_build/cell_table_builder.hpp"
 #include "safecell/lut_build/model_luts.hpp"
 #include "safecell/lut_files/lut_cache.hpp"
@@ -233,6 +236,46 @@ TEST_F(LutFile, AHeaderCountingMoreCamerasThanSectionsIsRefusedBeforeAllocating)
     ADD_FAILURE() << "the summary of a file of 2^32 - 1 cameras was read";
   } catch (const LutFileError& error) {
     EXPECT_NE(std::string(error.what()).find("4294967295 cameras"), std::string::npos);
+  }
+}
+
+// Cameras that see none of the robot's reach make tables with no pair in them: such a cell protects
+// nobody, and the cache refuses it with every camera's pairs (it built them and exited 0).
+TEST_F(LutFile, ACellWhoseCamerasSeeNoneOfTheRobotIsRefused) {
+  CellModel blind = *cell_;
+  for (PinholeCamera& camera : blind.cameras) {
+    const Eigen::Vector3d at = camera.position_m();
+    const Eigen::Vector3d outward(at.x() * 3.0, at.y() * 3.0, at.z());  // level, away from it
+    camera = PinholeCamera::look_at(camera.name(), at, outward, Eigen::Vector3d::UnitZ(), 0.8,
+                                    camera.intrinsics().width_px, camera.intrinsics().height_px);
+  }
+  try {
+    (void)model_luts_cached(blind, *grid_, ModelLutOptions{}, folder_);
+    ADD_FAILURE() << "the tables of a cell no camera of which sees the robot were taken";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("only 0 of 4 cameras see any of the robot's reach"),
+              std::string::npos)
+        << error.what();
+  }
+  // Control: the cell as it is passes (its cameras see the robot).
+  EXPECT_NO_THROW((void)model_luts_cached(*cell_, *grid_, ModelLutOptions{}, folder_));
+}
+
+// A grid whose table build needs more memory than the machine has is refused before it starts.
+TEST_F(LutFile, ABuildBeyondTheMachinesMemoryIsRefusedBeforeItStarts) {
+  CellConfig fine = test::coarse_default_config();
+  fine.m_max_m = 0.01;  // some 548 M cells: about 250 GB while built
+  const CellModel cell = load_cell_model(fine);
+  const CspaceGrid grid = make_grid(cell.config);
+  const double machine_bytes =
+      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  if (machine_bytes > 450.0 * grid.cell_count()) GTEST_SKIP() << "this machine could build them";
+  try {
+    (void)model_luts_cached(cell, grid, ModelLutOptions{}, folder_);
+    ADD_FAILURE() << "a build of " << grid.cell_count() << " cells was started";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("GB while they are built"), std::string::npos)
+        << error.what();
   }
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <sstream>
 
 #include "safecell/camera/calibration_file.hpp"
 #include "safecell/camera/camera_error.hpp"
@@ -35,6 +36,31 @@ PinholeCamera camera_of(const CameraConfig& camera, std::size_t index) {
   }
 }
 
+// Where a camera of the cell can hang: over the floor, at most this far above the cell's height or
+// outside its walls (cameras on a fence or a gantry beside the cell). A pose file holding the
+// camera-to-cell transform where cell-to-camera belongs puts the camera elsewhere.
+constexpr double kAboveCeiling_m = 1.0;
+constexpr double kOutsideWalls_m = 2.0;
+
+void check_camera_place(const CellConfig& cell, std::size_t index, const PinholeCamera& camera) {
+  const Eigen::Vector3d at = camera.position_m();
+  const double half_x = cell.size_m[0] / 2.0 + kOutsideWalls_m;
+  const double half_y = cell.size_m[1] / 2.0 + kOutsideWalls_m;
+  const double top = cell.size_m[2] + kAboveCeiling_m;
+  if (at.z() > 0.0 && at.z() <= top && std::abs(at.x()) <= half_x && std::abs(at.y()) <= half_y) {
+    return;
+  }
+  std::ostringstream problem;
+  problem << "'" << camera.name() << "' has its optical centre at (" << at.x() << ", " << at.y()
+          << ", " << at.z() << ") m, outside where a camera of this " << cell.size_m[0] << " x "
+          << cell.size_m[1] << " x " << cell.size_m[2]
+          << " m cell can hang (above the floor, at most " << kAboveCeiling_m
+          << " m above its height and " << kOutsideWalls_m
+          << " m outside its walls); does its pose file hold camera-to-cell instead of "
+             "cell-to-camera?";
+  throw_cell_error(cell.cameras[index].at, camera_path(index), problem.str());
+}
+
 }  // namespace
 
 std::vector<PinholeCamera> cell_cameras(const CellConfig& cell) {
@@ -47,6 +73,7 @@ std::vector<PinholeCamera> cell_cameras(const CellConfig& cell) {
                        "'" + camera.name + "' is used by an earlier camera; names must differ");
     }
     cameras.push_back(camera_of(camera, i));
+    check_camera_place(cell, i, cameras.back());
   }
   return cameras;
 }
@@ -57,6 +84,19 @@ FeatureGrid cell_feature_grid(const CellConfig& cell, const std::vector<PinholeC
       "[" + std::to_string(grid.columns) + " x " + std::to_string(grid.rows) + "]";
   if (cameras.empty()) {
     return FeatureGrid::tiling(grid.columns * 11, grid.rows * 9, grid.columns, grid.rows);
+  }
+  // One feature grid and one set of tables serve every camera: their images must be alike.
+  const CameraIntrinsics& first = cameras.front().intrinsics();
+  for (std::size_t i = 1; i < cameras.size(); ++i) {
+    const CameraIntrinsics& in = cameras[i].intrinsics();
+    if (in.width_px != first.width_px || in.height_px != first.height_px) {
+      throw_cell_error(cell.cameras[i].at, camera_path(i),
+                       "'" + cameras[i].name() + "' gives " + std::to_string(in.width_px) + " x " +
+                           std::to_string(in.height_px) + " px images, but '" +
+                           cameras.front().name() + "' gives " + std::to_string(first.width_px) +
+                           " x " + std::to_string(first.height_px) +
+                           " px; expected every camera of a cell to give images of one size");
+    }
   }
   FeatureGrid tiling;
   for (const auto& camera : cameras) {

@@ -1,14 +1,63 @@
 #include "safecell/lut_files/lut_cache.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <system_error>
 
+#include "safecell/errors/input_error.hpp"
 #include "safecell/files/atomic_write.hpp"
 #include "safecell/lut_files/lut_file.hpp"
 
 namespace safecell {
+namespace {
+
+// A table build's peak memory per C-space cell: 7.1 GB for the 6 cm grid's 16.5 M cells
+// (docs/validation.md), rounded up. A build that needs more than most of the machine's memory is
+// refused before it starts (a cell of m_max_m 0.01 ended in std::bad_alloc, exit 70).
+constexpr double kBuildBytesPerCell = 450.0;
+constexpr double kUsableMemoryShare = 0.8;
+
+void check_build_fits_the_machine(const CspaceGrid& grid) {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_bytes = ::sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || page_bytes <= 0) return;  // unknown: the build will tell
+  const double have = static_cast<double>(pages) * static_cast<double>(page_bytes);
+  const double need = kBuildBytesPerCell * static_cast<double>(grid.cell_count());
+  if (need <= kUsableMemoryShare * have) return;
+  std::ostringstream message;
+  message.precision(3);
+  message << "the tables of this cell's " << grid.cell_count() << " C-space cells need about "
+          << need / 1e9 << " GB while they are built (" << kBuildBytesPerCell
+          << " bytes a cell), this machine has " << have / 1e9
+          << " GB; raise m_max_m or discretise fewer joints (safecell cell info shows the cells)";
+  throw InputError(message.str());
+}
+
+// A cell whose cameras cannot outvote the threshold anywhere in the robot's reach protects
+// nobody: every camera's tables empty (cameras that see none of the robot's reach, or a pose file
+// turned around) built and ran with exit 0.
+void check_cameras_see_the_robot(const CellModel& cell, const LutSet& set) {
+  if (cell.cameras.empty()) return;
+  int seeing = 0;
+  std::ostringstream pairs;
+  for (std::size_t c = 0; c < set.cameras.size() && c < cell.cameras.size(); ++c) {
+    const std::uint64_t covered = set.cameras[c].covered_pairs();
+    seeing += covered > 0 ? 1 : 0;
+    pairs << (c == 0 ? "" : ", ") << cell.cameras[c].name() << " " << covered;
+  }
+  if (seeing >= cell.camera_threshold) return;
+  throw InputError("only " + std::to_string(seeing) + " of " + std::to_string(cell.cameras.size()) +
+                   " cameras see any of the robot's reach (pixel-cell pairs: " + pairs.str() +
+                   "), and a cell needs " + std::to_string(cell.camera_threshold) +
+                   " to vote: it cannot protect anyone; check the cameras' poses "
+                   "(safecell cell coverage)");
+}
+
+}  // namespace
 
 std::filesystem::path default_lut_cache_folder() {
   if (const char* folder = std::getenv("SAFECELL_CACHE"); folder != nullptr && *folder != '\0') {
@@ -40,11 +89,13 @@ CachedLuts model_luts_cached(const CellModel& cell, const CspaceGrid& grid,
   if (std::filesystem::exists(result.file, error)) {
     try {
       result.set = load_lut_file(result.file, grid, fingerprint);
+      check_cameras_see_the_robot(cell, result.set);
       return result;
     } catch (const LutFileError& refused) {
       result.note = std::string("rebuilt: ") + refused.what();
     }
   }
+  check_build_fits_the_machine(grid);
   std::filesystem::create_directories(folder, error);
   if (error) throw FileError(folder, "cannot create the LUT cache folder: " + error.message());
   const auto start = std::chrono::steady_clock::now();
@@ -52,6 +103,7 @@ CachedLuts model_luts_cached(const CellModel& cell, const CspaceGrid& grid,
   result.build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.built = true;
   write_lut_file(result.file, result.set);
+  check_cameras_see_the_robot(cell, result.set);
   return result;
 }
 
