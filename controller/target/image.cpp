@@ -1,13 +1,15 @@
 // A bare-metal image of the controller core for a Cortex-M7, to measure it: the default cell's
 // grid, the map store and link with static memory, the look-ahead, the watchdog and the safety
-// cycle, behind ports that read and write memory-mapped "registers". It is linked, never run here:
-// its text/data/bss sizes and the cycle's stack depth (from GCC's call graph) are what the
-// bare-metal build reports (cmake/ControllerImageReport.cmake). A real target replaces the ports
-// with its robot interface, its timer and its Ethernet driver.
+// cycle, behind ports that read and write memory-mapped "registers", with session challenges from
+// a boot counter. It is linked, never run here: its text/data/bss sizes and the cycle's stack
+// depth (from GCC's call graph) are what the bare-metal build reports
+// (cmake/ControllerImageReport.cmake). A real target replaces the ports with its robot interface,
+// its timer, its Ethernet driver and, where it has one, its hardware random number generator.
 // Not in the image: the grid planner (its per-cell arrays, 4.7 MB on the default grid, are the
 // host module's; a target runs gross motion with a planner on a partition it can afford).
 
 #include "safecell/base/freestanding_math.hpp"
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/controller_link.hpp"
 #include "safecell/controller/map_store.hpp"
 #include "safecell/controller/safety_cycle.hpp"
@@ -46,6 +48,9 @@ volatile std::uint32_t stop_request;
 volatile std::uint8_t ethernet_rx[kMaxFrameBytes];
 volatile std::uint32_t ethernet_rx_size;
 volatile std::uint8_t ethernet_tx[kMaxFrameBytes];
+// The boot count in non-volatile memory: the start-up code increments it before the core starts,
+// so the session challenges of this boot are ones no earlier boot gave out.
+volatile std::uint32_t boot_count;
 
 class TargetClock final : public ClockPort {
  public:
@@ -93,10 +98,11 @@ class TargetEthernet final : public LinkPort {
   TargetClock clock;
   TargetRobot robot;
   TargetEthernet ethernet;
+  BootCounterEntropy entropy(boot_count);
   MapStore store(kLayout, store_memory.storage());
   ControllerLinkConfig link_config;
   link_config.grid_fingerprint = grid.value().fingerprint();
-  ControllerLink link(link_config, ethernet, store);
+  ControllerLink link(link_config, ethernet, store, entropy);
   Watchdog watchdog({2'000'000, 6'000'000, 1'000'000});
   SafetyCycleConfig config;
   config.look_ahead.stop.joint_count = 6;

@@ -96,6 +96,8 @@ Outcome run_scenario(const Scenario& scenario) {
 
   test::ScriptedCoprocessor coprocessor(grid.fingerprint(), kLuts, kSession, cells);
   port.inbox.push_back(coprocessor.handshake(robot.time_ns()));
+  rig.link.poll(robot.time_ns());
+  port.inbox.push_back(coprocessor.answer(port.sent.back(), robot.time_ns()));
 
   // The region: every cell whose joint-0 coordinate lies at or beyond its front, which starts
   // `front0` and comes towards the robot (joint 0's negative direction) at a person's speed.

@@ -11,6 +11,7 @@
 #include <deque>
 #include <vector>
 
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/map_chunk.hpp"
@@ -40,7 +41,7 @@ using test::MemoryPort;
 class ControllerLinkTest : public ::testing::Test {
  protected:
   ControllerLinkTest()
-      : store_(MapStoreLayout::of(kCells)), link_(config(), port_, store_.store()) {}
+      : store_(MapStoreLayout::of(kCells)), link_(config(), port_, store_.store(), entropy_) {}
 
   static ControllerLinkConfig config() {
     ControllerLinkConfig c;
@@ -52,6 +53,11 @@ class ControllerLinkTest : public ::testing::Test {
     std::vector<std::uint64_t> words(cell_bits::words_for(kCells), 0);
     cell_bits::set_range(words.data(), begin, end);
     return words;
+  }
+  // The session's start: the opening, and the answer to the challenge the link sent back.
+  void open(test::ScriptedCoprocessor& coprocessor, std::uint64_t now) {
+    deliver(coprocessor.handshake(now), now);
+    deliver(coprocessor.answer(port_.sent.back(), now), now);
   }
   void deliver(const Bytes& frame, std::uint64_t now) {
     port_.inbox.push_back(frame);
@@ -76,13 +82,14 @@ class ControllerLinkTest : public ::testing::Test {
 
   HostMapStore store_;
   MemoryPort port_;
+  BootCounterEntropy entropy_{1};
   ControllerLink link_;
   ScriptedCoprocessor coprocessor_;
 };
 
 TEST_F(ControllerLinkTest, NoMotionUntilASessionAndAVerifiedKeyframe) {
   EXPECT_EQ(link_.block(0), LinkBlock::kNoSession);
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   ASSERT_TRUE(link_.session_up());
   EXPECT_TRUE(last_sent().body.handshake.accepted);
   EXPECT_EQ(link_.block(11 * kMs), LinkBlock::kNoMap);
@@ -105,8 +112,11 @@ TEST_F(ControllerLinkTest, NoMotionUntilASessionAndAVerifiedKeyframe) {
 TEST_F(ControllerLinkTest, AnUpdateLargerThanAPollsShareIsAppliedOverSeveralPolls) {
   ControllerLinkConfig sliced_config = config();
   sliced_config.map_work_per_poll = 8;
-  ControllerLink link(sliced_config, port_, store_.store());
+  BootCounterEntropy entropy(1);
+  ControllerLink link(sliced_config, port_, store_.store(), entropy);
   port_.inbox.push_back(coprocessor_.handshake(10 * kMs));
+  link.poll(10 * kMs);
+  port_.inbox.push_back(coprocessor_.answer(port_.sent.back(), 10 * kMs));
   link.poll(10 * kMs);
   ASSERT_TRUE(link.session_up());
   std::vector<std::uint64_t> first(cell_bits::words_for(kCells), 0);
@@ -144,7 +154,7 @@ TEST_F(ControllerLinkTest, AnUpdateLargerThanAPollsShareIsAppliedOverSeveralPoll
 // A chunk whose kind is a number this version does not name, behind a valid CRC: refused as
 // corruption (not taken as a keyframe), the held map kept.
 TEST_F(ControllerLinkTest, AChunkOfAnUnknownKindIsRefusedAsCorruption) {
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   const auto first = map_with(100, 900);
   deliver(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs), 21 * kMs);
   ASSERT_EQ(store_.store().version(), 1u);
@@ -207,7 +217,7 @@ Bytes keyframe_saying(ScriptedCoprocessor& sender, const std::vector<std::uint64
 // CRC (a corrupted encode buffer, sealed again) is refused like a changed cell, and the honest
 // count of the same map is taken. A status report can lower the count, never raise it.
 TEST_F(ControllerLinkTest, ACameraCountChangedBehindTheCrcIsRefused) {
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   const auto first = map_with(100, 900);
   deliver(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs), 21 * kMs);
   ASSERT_EQ(store_.store().version(), 1u);
@@ -244,7 +254,7 @@ TEST_F(ControllerLinkTest, ACameraCountChangedBehindTheCrcIsRefused) {
 // a valid CRC is refused and the held map keeps its limit; the honest reduction is taken with
 // its map, and the next map without one lifts it.
 TEST_F(ControllerLinkTest, ASpeedReductionChangedBehindTheCrcIsRefused) {
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   const auto first = map_with(100, 900);
   deliver(keyframe_saying(coprocessor_, first, 1, 4, 4, 20 * kMs, 750, 750), 21 * kMs);
   ASSERT_EQ(store_.store().version(), 1u);
@@ -270,7 +280,7 @@ TEST_F(ControllerLinkTest, ASpeedReductionChangedBehindTheCrcIsRefused) {
 }
 
 TEST_F(ControllerLinkTest, TheJointStreamAcknowledgesTheHeldVersion) {
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   deliver(coprocessor_.update(nullptr, 0, map_with(0, 10), 1, 19 * kMs, 20 * kMs), 21 * kMs);
   JointSample joints;
   joints.joint_count = 6;
@@ -303,7 +313,7 @@ TEST_F(ControllerLinkTest, AnotherLutFingerprintIsRefusedAndNamed) {
 }
 
 TEST_F(ControllerLinkTest, StaleAndHashlessMapsAreRefusedAndTwoErrorsLatch) {
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   const auto first = map_with(100, 900);
   // Captured 200 ms before arrival: older than the 150 ms maximum.
   deliver(coprocessor_.update(nullptr, 0, first, 1, 10 * kMs, 210 * kMs), 210 * kMs);
@@ -320,25 +330,170 @@ TEST_F(ControllerLinkTest, StaleAndHashlessMapsAreRefusedAndTwoErrorsLatch) {
 }
 
 TEST_F(ControllerLinkTest, ANewSessionForgetsTheHeldMap) {
-  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  open(coprocessor_, 10 * kMs);
   deliver(coprocessor_.update(nullptr, 0, map_with(0, 10), 1, 19 * kMs, 20 * kMs), 21 * kMs);
   ASSERT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
-  test::ScriptedCoprocessor restarted(kGrid, kLuts, kSession + 1, kCells);  // a new session id
-  deliver(restarted.handshake(30 * kMs), 30 * kMs);
+  test::ScriptedCoprocessor restarted(kGrid, kLuts, kSession + 1, kCells);  // a new opening
+  open(restarted, 30 * kMs);
+  EXPECT_TRUE(link_.session_up());
+  EXPECT_EQ(link_.session_id(), restarted.session());
   EXPECT_EQ(link_.block(31 * kMs), LinkBlock::kNoMap);
   EXPECT_EQ(cell_bits::count(held().data(), 0, kCells), kCells) << "no map: all forbidden";
 }
 
-TEST_F(ControllerLinkTest, AReplayedHandshakeOfTheSessionIsARepetitionAndKeepsTheMap) {
-  const Bytes handshake = coprocessor_.handshake(10 * kMs);
-  deliver(handshake, 10 * kMs);
+TEST_F(ControllerLinkTest, TheSessionIdIsTheOpeningXorTheControllersChallenge) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  EXPECT_FALSE(link_.session_up()) << "an opening alone opens nothing";
+  const safecell_v1_Message challenge = last_sent();
+  ASSERT_EQ(challenge.which_body, safecell_v1_Message_handshake_tag);
+  EXPECT_FALSE(challenge.body.handshake.accepted);
+  ASSERT_NE(challenge.body.handshake.challenge, 0u);
+  EXPECT_EQ(challenge.body.handshake.session_id, kSession);
+  // The opening sent again (lost answer, or a duplicate) gets the same challenge.
+  deliver(coprocessor_.handshake(12 * kMs), 12 * kMs);
+  EXPECT_EQ(last_sent().body.handshake.challenge, challenge.body.handshake.challenge);
+  EXPECT_EQ(link_.challenges_given(), 1u);
+  deliver(coprocessor_.answer(port_.sent.back(), 13 * kMs), 13 * kMs);
+  ASSERT_TRUE(link_.session_up());
+  EXPECT_TRUE(last_sent().body.handshake.accepted);
+  EXPECT_EQ(last_sent().body.handshake.challenge, challenge.body.handshake.challenge);
+  EXPECT_EQ(link_.session_id(), kSession ^ challenge.body.handshake.challenge);
+  EXPECT_EQ(link_.latch().total(), 0u) << "an honest start is no error";
+}
+
+TEST_F(ControllerLinkTest, AnAnswerToAnExpiredOrForeignChallengeIsRefused) {
+  deliver(coprocessor_.handshake(10 * kMs), 10 * kMs);
+  const Bytes challenge = port_.sent.back();
+  // Later than the challenge's lifetime (1 s): refused, no answer sent.
+  const std::size_t sent = port_.sent.size();
+  deliver(coprocessor_.answer(challenge, 1011 * kMs), 1011 * kMs);
+  EXPECT_FALSE(link_.session_up());
+  EXPECT_EQ(link_.last_fault().error, LinkError::kRepetition);
+  EXPECT_EQ(port_.sent.size(), sent) << "a stale answer gets nothing back";
+  // Another opening's challenge, answered by this opening: refused too.
+  ScriptedCoprocessor other;
+  test::ScriptedCoprocessor second(kGrid, kLuts, kSession + 7, kCells);
+  deliver(second.handshake(1020 * kMs), 1020 * kMs);
+  deliver(other.answer(port_.sent.back(), 1021 * kMs), 1021 * kMs);
+  EXPECT_FALSE(link_.session_up());
+  EXPECT_EQ(link_.stale_answers(), 2u);
+  // The control: the second opening answering its own challenge opens.
+  deliver(second.handshake(1022 * kMs), 1022 * kMs);
+  deliver(second.answer(port_.sent.back(), 1023 * kMs), 1023 * kMs);
+  EXPECT_TRUE(link_.session_up());
+}
+
+// Everything one session's coprocessor sent, as the network could record and replay it.
+struct RecordedSession {
+  std::vector<Bytes> frames;
+  std::vector<std::uint64_t> map;
+};
+
+TEST_F(ControllerLinkTest, AReplayedStartOfTheLiveSessionIsRefusedAndKeepsItsMap) {
+  const Bytes opening = coprocessor_.handshake(10 * kMs);
+  deliver(opening, 10 * kMs);
+  const Bytes answer = coprocessor_.answer(port_.sent.back(), 10 * kMs);
+  deliver(answer, 10 * kMs);
+  const std::uint64_t session = link_.session_id();
   const auto map = map_with(0, 10);
   deliver(coprocessor_.update(nullptr, 0, map, 1, 19 * kMs, 20 * kMs), 21 * kMs);
   ASSERT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
-  deliver(handshake, 25 * kMs);
+  deliver(opening, 25 * kMs);  // answered with a new challenge: nothing else changes
+  deliver(answer, 25 * kMs);   // its challenge is used up
   EXPECT_EQ(link_.last_fault().error, LinkError::kRepetition);
+  EXPECT_EQ(link_.session_id(), session);
   EXPECT_EQ(link_.block(26 * kMs), LinkBlock::kNone) << "the session and its map stay";
   EXPECT_EQ(held(), map);
+}
+
+// A recorded session replayed into a controller that restarted (its boot counter went on): the
+// replayed answer does not echo the new boot's challenge, so no session opens and no map of the
+// recording is taken. Negative control: a controller whose challenges restart with it (the boot
+// counter not kept) takes the same recording as a session, with its map: the test would see a
+// challenge that is not fresh.
+TEST_F(ControllerLinkTest, ARecordedSessionReplayedIntoARestartedControllerIsRefused) {
+  RecordedSession recorded;
+  recorded.map = map_with(300, 700);
+  {
+    HostMapStore store(MapStoreLayout::of(kCells));
+    MemoryPort port;
+    BootCounterEntropy boot_one(1);
+    ControllerLink first_boot(config(), port, store.store(), boot_one);
+    ScriptedCoprocessor coprocessor;
+    const auto play = [&](Bytes frame, std::uint64_t now) {
+      recorded.frames.push_back(frame);
+      port.inbox.push_back(std::move(frame));
+      first_boot.poll(now);
+    };
+    play(coprocessor.handshake(10 * kMs), 10 * kMs);
+    play(coprocessor.answer(port.sent.back(), 10 * kMs), 10 * kMs);
+    play(coprocessor.update(nullptr, 0, recorded.map, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+    ASSERT_EQ(first_boot.block(22 * kMs), LinkBlock::kNone) << "the recording is of a session";
+  }
+  const auto replay_into = [&](std::uint32_t boot_count) {
+    HostMapStore store(MapStoreLayout::of(kCells));
+    MemoryPort port;
+    BootCounterEntropy boot(boot_count);
+    ControllerLink restarted(config(), port, store.store(), boot);
+    // Replayed soon after the restart (its clock starts again), each frame as recorded.
+    for (const Bytes& frame : recorded.frames) {
+      port.inbox.push_back(frame);
+      restarted.poll(21 * kMs);
+    }
+    return std::make_pair(restarted.session_up(), store.store().version());
+  };
+  const auto [session_after_restart, version_after_restart] = replay_into(2);
+  EXPECT_FALSE(session_after_restart);
+  EXPECT_EQ(version_after_restart, 0u) << "no map of the recording is taken";
+  const auto [session_without_fresh_challenge, version_without_fresh_challenge] = replay_into(1);
+  EXPECT_TRUE(session_without_fresh_challenge) << "negative control: the replay itself works";
+  EXPECT_EQ(version_without_fresh_challenge, 1u);
+}
+
+// A recording of an earlier session, replayed into the live session of a later opening: its start
+// is refused, its data frames are of another session (masquerade), the live session and its map
+// stay; the errors count, and the second latches a stop named as such.
+TEST_F(ControllerLinkTest, ARecordedSessionReplayedIntoALiveOneChangesNothingButTheErrorCount) {
+  ScriptedCoprocessor earlier;
+  std::vector<Bytes> recording;
+  recording.push_back(earlier.handshake(5 * kMs));
+  deliver(recording.back(), 5 * kMs);
+  recording.push_back(earlier.answer(port_.sent.back(), 5 * kMs));
+  deliver(recording.back(), 5 * kMs);
+  recording.push_back(earlier.update(nullptr, 0, map_with(3000, 4000), 1, 6 * kMs, 6 * kMs));
+  deliver(recording.back(), 6 * kMs);
+  ASSERT_EQ(store_.store().version(), 1u) << "the recording is of a session";
+  test::ScriptedCoprocessor live(kGrid, kLuts, kSession + 1, kCells);
+  open(live, 10 * kMs);
+  const auto map = map_with(0, 10);
+  deliver(live.update(nullptr, 0, map, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  const std::uint64_t session = link_.session_id();
+  ASSERT_EQ(link_.block(22 * kMs), LinkBlock::kNone);
+  deliver(recording[0], 23 * kMs);
+  deliver(recording[1], 23 * kMs);
+  EXPECT_EQ(link_.session_id(), session);
+  EXPECT_EQ(link_.block(24 * kMs), LinkBlock::kNone) << "one refused answer: the robot goes on";
+  EXPECT_EQ(link_.latch().total(), 1u);
+  deliver(recording[2], 25 * kMs);
+  EXPECT_EQ(link_.last_fault().error, LinkError::kMasquerade);
+  EXPECT_EQ(link_.session_id(), session);
+  EXPECT_EQ(held(), map);
+  EXPECT_EQ(link_.block(26 * kMs), LinkBlock::kLatched) << "the second error stops, named";
+}
+
+// A source of challenges that fails opens no session, and says why in the refusal.
+TEST_F(ControllerLinkTest, NoChallengeNoSession) {
+  struct FailingEntropy final : EntropyPort {
+    bool draw(std::uint64_t&) noexcept override { return false; }
+  } failing;
+  HostMapStore store(MapStoreLayout::of(kCells));
+  ControllerLink link(config(), port_, store.store(), failing);
+  port_.inbox.push_back(coprocessor_.handshake(10 * kMs));
+  link.poll(10 * kMs);
+  EXPECT_FALSE(link.session_up());
+  EXPECT_EQ(link.last_fault().error, LinkError::kWrongConfiguration);
+  EXPECT_FALSE(last_sent().body.handshake.accepted);
+  EXPECT_EQ(last_sent().body.handshake.challenge, 0u);
 }
 
 TEST_F(ControllerLinkTest, OversizeDatagramsAndGarbageAreCorruption) {

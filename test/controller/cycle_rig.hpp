@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/controller_link.hpp"
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/controller/host/simulated_robot.hpp"
@@ -19,7 +20,7 @@ struct CycleRig {
       : robot(robot_config),
         clock(robot),
         store(MapStoreLayout::of(grid.cell_count())),
-        link(link_config(grid, lut_fingerprint), port, store.store()),
+        link(link_config(grid, lut_fingerprint), port, store.store(), entropy),
         watchdog({3'000'000, 5'000'000, 2'000'000}),
         cycle(grid, with_stop_model(config, robot_config), robot, clock, link, store.store(),
               watchdog) {
@@ -41,6 +42,7 @@ struct CycleRig {
   SimulatedRobot robot;
   SimulatedClock clock;
   HostMapStore store;
+  BootCounterEntropy entropy{1};
   ControllerLink link;
   Watchdog watchdog;
   SafetyCycle cycle;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cycle_rig.hpp"
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/gross_motion.hpp"
 #include "safecell/controller/host/planner_memory.hpp"
 #include "scripted_coprocessor.hpp"
@@ -104,6 +105,12 @@ TEST(ControllerCycle, AllocatesNothingAfterInit) {
   test::ScriptedCoprocessor coprocessor(grid.fingerprint(), kLuts, 0x5E55, cells);
   const std::uint64_t start = robot.time_ns();
   port.frames.push_back(coprocessor.handshake(start));
+  port.due.push_back(start);
+  // The rig's source of challenges, drawn the same way: the answer is known before the count.
+  BootCounterEntropy same_as_the_rig(1);
+  std::uint64_t challenge = 0;
+  ASSERT_TRUE(same_as_the_rig.draw(challenge));
+  port.frames.push_back(coprocessor.answer_to(challenge, start));
   port.due.push_back(start);
   std::vector<std::uint64_t> previous;
   for (std::uint64_t k = 1; k <= 120; ++k) {

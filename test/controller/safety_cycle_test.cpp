@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/controller/host/simulated_robot.hpp"
 #include "scripted_coprocessor.hpp"
@@ -42,7 +43,7 @@ class SafetyCycleTest : public ::testing::Test {
         robot_(robot_config()),
         clock_(robot_),
         store_(MapStoreLayout::of(grid_.cell_count())),
-        link_(link_config(), port_, store_.store()),
+        link_(link_config(), port_, store_.store(), entropy_),
         watchdog_({3 * kMs, 5 * kMs, 2 * kMs}),
         cycle_(grid_, cycle_config(min_cameras, look_ahead_off), robot_, clock_, link_,
                store_.store(), watchdog_),
@@ -84,6 +85,8 @@ class SafetyCycleTest : public ::testing::Test {
   void open_session() {
     port_.inbox.push_back(coprocessor_.handshake(now()));
     (void)cycle();
+    port_.inbox.push_back(coprocessor_.answer(port_.sent.back(), now()));
+    (void)cycle();
   }
   // Cycles with a fresh map every 8th, for `count` cycles; the last report.
   CycleReport run_with_maps(int count, const Words& map) {
@@ -99,6 +102,7 @@ class SafetyCycleTest : public ::testing::Test {
   SimulatedRobot robot_;
   SimulatedClock clock_;
   HostMapStore store_;
+  BootCounterEntropy entropy_{1};
   test::MemoryPort port_;
   ControllerLink link_;
   Watchdog watchdog_;

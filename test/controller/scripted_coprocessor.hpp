@@ -48,6 +48,16 @@ class ScriptedCoprocessor {
       : sender_(grid_fingerprint, lut_fingerprint, session, cells) {}
 
   Bytes handshake(std::uint64_t now) { return sender_.handshake(now); }
+  // The answer to the challenge in the controller's reply to the opening; the frames after it
+  // are the session's.
+  Bytes answer(const Bytes& controller_reply, std::uint64_t now) {
+    return sender_.answer(safecell::ScriptedCoprocessor::challenge_in(controller_reply), now);
+  }
+  // The same for a challenge known beforehand (a test that preloads every frame).
+  Bytes answer_to(std::uint64_t challenge, std::uint64_t now) {
+    return sender_.answer(challenge, now);
+  }
+  std::uint64_t session() const { return sender_.session(); }
   // The update in one frame. wrong_hash: the hash of another map (a sender fault the receiver
   // must catch).
   Bytes update(const std::vector<std::uint64_t>* base, std::uint64_t base_version,

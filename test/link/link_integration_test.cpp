@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
@@ -15,8 +16,10 @@
 #include <vector>
 
 #include "demo_maps.hpp"
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/controller_link.hpp"
 #include "safecell/controller/host/map_store_memory.hpp"
+#include "safecell/controller/host/system_entropy.hpp"
 #include "safecell/controller/host/udp_link_port.hpp"
 #include "safecell/cspace/cell_bits.hpp"
 #include "safecell/cspace/map_hash.hpp"
@@ -92,16 +95,20 @@ class TappedPort final : public LinkPort {
 };
 
 // The controller's side in its own thread: polls the link, sends a joint state every 4 ms and
-// records every map it takes.
+// records every map it takes. Its session challenges come from the kernel, or, given a boot
+// count, from a boot counter (a controller restarted with the same count draws the same ones).
 class ControllerSide {
  public:
-  ControllerSide(const CspaceGrid& grid, const ControllerLinkConfig& config)
+  ControllerSide(const CspaceGrid& grid, const ControllerLinkConfig& config,
+                 std::uint32_t boot_count = 0)
       : cells_(grid.cell_count()),
         store_(MapStoreLayout::of(cells_)),
         port_({"127.0.0.1", 0}, {"127.0.0.1", 9}),
         naive_(cells_),
         tapped_(port_, naive_),
-        link_(config, tapped_, store_.store()) {}
+        boot_counter_(boot_count),
+        link_(config, tapped_, store_.store(),
+              boot_count != 0 ? static_cast<EntropyPort&>(boot_counter_) : system_entropy_) {}
   ~ControllerSide() { stop(); }
 
   std::uint16_t port() const { return port_.local_port(); }
@@ -165,6 +172,8 @@ class ControllerSide {
   UdpLinkPort port_;
   NaiveReceiver naive_;
   TappedPort tapped_;
+  SystemEntropy system_entropy_;
+  BootCounterEntropy boot_counter_;
   ControllerLink link_;
   std::thread thread_;
   std::atomic<bool> running_{true};
@@ -216,6 +225,142 @@ std::vector<FaultClass> fault_classes() {
 }
 
 class LinkUnderFaults : public ::testing::TestWithParam<FaultClass> {};
+
+// The coprocessor's transport, keeping a copy of every datagram it sends: what the network
+// could record and replay.
+class RecordingTransport final : public DatagramTransport {
+ public:
+  explicit RecordingTransport(UdpTransport& inner) : inner_(inner) {}
+  bool send(std::span<const std::uint8_t> datagram) override {
+    sent.emplace_back(datagram.begin(), datagram.end());
+    return inner_.send(datagram);
+  }
+  std::optional<std::size_t> receive(std::span<std::uint8_t> buffer,
+                                     std::chrono::microseconds timeout) override {
+    return inner_.receive(buffer, timeout);
+  }
+  std::vector<std::vector<std::uint8_t>> sent;
+
+ private:
+  UdpTransport& inner_;
+};
+
+CoprocessorLinkConfig coprocessor_config(const CspaceGrid& grid) {
+  CoprocessorLinkConfig config;
+  config.cell_count = grid.cell_count();
+  config.grid_fingerprint = grid.fingerprint();
+  config.lut_fingerprint = kLutFingerprint;
+  return config;
+}
+
+ControllerLinkConfig controller_config(const CspaceGrid& grid) {
+  ControllerLinkConfig config;
+  config.grid_fingerprint = grid.fingerprint();
+  config.lut_fingerprint = kLutFingerprint;
+  return config;
+}
+
+// A session recorded on the wire: its opening, answer, clock echoes and the demo's first maps.
+std::vector<std::vector<std::uint8_t>> record_a_session(std::uint32_t boot_count) {
+  const test::DemoMaps& demo = test::demo_maps();
+  ControllerSide controller(demo.grid, controller_config(demo.grid), boot_count);
+  UdpTransport udp({"127.0.0.1", 0}, {"127.0.0.1", controller.port()});
+  RecordingTransport recording(udp);
+  controller.talk_to(udp.local_port());
+  controller.start();
+  CoprocessorLink link(coprocessor_config(demo.grid), recording);
+  link.open(2s);
+  for (std::size_t m = 0; m < 10; ++m) {
+    (void)link.send_map(demo.maps[m], steady_ns(), 4, 4);
+    link.poll(10ms);
+  }
+  link.poll(50ms);
+  controller.stop();
+  EXPECT_GE(controller.taken().size(), 5u) << "the recording is of a session";
+  return recording.sent;
+}
+
+// Sends the recording again through `transport` (the network replays it from the address it was
+// recorded from, the one the controller talks to), 1 ms apart; `between` runs after each.
+void replay(const std::vector<std::vector<std::uint8_t>>& recording, DatagramTransport& transport,
+            const std::function<void()>& between) {
+  for (const auto& datagram : recording) {
+    (void)transport.send(datagram);
+    between();
+  }
+}
+
+// A recorded session, replayed over UDP into a controller started again (the product's source of
+// challenges): no session opens and no map of the recording is taken. Negative control: two
+// controllers whose challenges repeat (a boot counter that was not kept) open the recorded
+// session again, so the test would see a challenge that is not fresh.
+TEST(LinkSession, ARecordedSessionReplayedIntoARestartedControllerOpensNothing) {
+  const test::DemoMaps& demo = test::demo_maps();
+  const auto recording = record_a_session(0);
+  ASSERT_FALSE(recording.empty());
+  const auto replay_into = [](ControllerSide& controller,
+                              const std::vector<std::vector<std::uint8_t>>& datagrams) {
+    UdpTransport network({"127.0.0.1", 0}, {"127.0.0.1", controller.port()});
+    controller.talk_to(network.local_port());
+    controller.start();
+    replay(datagrams, network, [] { std::this_thread::sleep_for(1ms); });
+    std::this_thread::sleep_for(50ms);
+    controller.stop();
+  };
+  {
+    ControllerSide restarted(demo.grid, controller_config(demo.grid));
+    replay_into(restarted, recording);
+    EXPECT_FALSE(restarted.link().session_up());
+    EXPECT_TRUE(restarted.taken().empty()) << "a map of the recording was taken";
+    EXPECT_GE(restarted.link().stale_answers(), 1u);
+  }
+  const auto same_boot_recording = record_a_session(1);
+  ControllerSide same_challenges(demo.grid, controller_config(demo.grid), 1);
+  replay_into(same_challenges, same_boot_recording);
+  EXPECT_TRUE(same_challenges.link().session_up()) << "negative control: the replay opens";
+  // Its maps are refused as too old here (this controller's clock went on; one that restarts at
+  // boot could find them fresh: ControllerLinkTest.ARecordedSessionReplayedInto...).
+}
+
+// A recording replayed into a live session: the live session keeps its id and goes on
+// taking its own maps, every one right; the replay is detected (its data frames are of another
+// session) and named, never taken for the live session's.
+TEST(LinkSession, ARecordedSessionReplayedIntoALiveOneDoesNotDisturbIt) {
+  const test::DemoMaps& demo = test::demo_maps();
+  const auto recording = record_a_session(0);
+  ControllerSide controller(demo.grid, controller_config(demo.grid));
+  UdpTransport udp({"127.0.0.1", 0}, {"127.0.0.1", controller.port()});
+  controller.talk_to(udp.local_port());
+  controller.start();
+  CoprocessorLink link(coprocessor_config(demo.grid), udp);
+  link.open(2s);
+  std::map<std::uint64_t, const CellSet*> sent;
+  std::uint64_t sent_after_replay = 0;  // the first version sent after the replay
+  for (std::size_t m = 0; m < demo.maps.size(); ++m) {
+    // Between the fifth and sixth map, from the live coprocessor's address, while its link goes
+    // on answering.
+    if (m == 5) replay(recording, udp, [&link] { link.poll(1ms); });
+    const MapUpdate update = link.send_map(demo.maps[m], steady_ns(), 4, 4);
+    sent.emplace(update.version, &demo.maps[m]);
+    if (m == 5) sent_after_replay = update.version;
+    link.poll(10ms);
+  }
+  link.poll(50ms);
+  controller.stop();
+  EXPECT_EQ(controller.link().session_id(), link.session_id()) << "the live session was replaced";
+  const auto taken = controller.taken();
+  std::size_t wrong = 0;
+  std::size_t after_replay = 0;
+  for (const auto& [version, words] : taken) {
+    const auto original = sent.find(version);
+    wrong += original == sent.end() || words != original->second->words() ? 1U : 0U;
+    after_replay += version >= sent_after_replay ? 1U : 0U;
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(after_replay, 0u) << "the live session took no map after the replay";
+  EXPECT_GE(controller.link().stale_answers(), 1u);
+  EXPECT_GT(controller.link().latch().count(LinkError::kMasquerade), 0u);
+}
 
 TEST(LinkSession, TheControllersWatchdogAndDataAgeAreTheSessions) {
   const test::DemoMaps& demo = test::demo_maps();

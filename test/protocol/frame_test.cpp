@@ -99,12 +99,16 @@ TEST(Frame, RefusesOversizePayloadsAndSmallBuffers) {
 }
 
 TEST(Frame, AnUnknownVersionIsRefusedWithItsVersion) {
-  std::vector<std::uint8_t> frame = frame_with_payload(10);
-  frame[2] = 2;
-  const auto opened = open_frame(frame.data(), frame.size(), kFingerprint);
-  ASSERT_FALSE(opened.ok());
-  EXPECT_EQ(opened.error().error, LinkError::kWrongConfiguration);
-  EXPECT_EQ(opened.error().detail, 2u);
+  // The next version, and the one before (version 1 opened a session without the controller's
+  // challenge).
+  for (const std::uint8_t version : {std::uint8_t{kProtocolVersion + 1}, std::uint8_t{1}}) {
+    std::vector<std::uint8_t> frame = frame_with_payload(10);
+    frame[2] = version;
+    const auto opened = open_frame(frame.data(), frame.size(), kFingerprint);
+    ASSERT_FALSE(opened.ok());
+    EXPECT_EQ(opened.error().error, LinkError::kWrongConfiguration);
+    EXPECT_EQ(opened.error().detail, version);
+  }
 }
 
 TEST(Frame, ADifferentImplicitFingerprintFailsTheCrc) {

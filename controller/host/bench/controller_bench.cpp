@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "map_sequence_file.hpp"
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/controller_link.hpp"
 #include "safecell/controller/grid_planner.hpp"
 #include "safecell/controller/host/map_store_memory.hpp"
@@ -176,7 +177,8 @@ void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced
     link_config.map_work_per_poll = MapStore::kUnlimited;
     link_config.max_frames_per_poll = ControllerLink::kMaxFramesPerPoll;
   }
-  ControllerLink link(link_config, port, store.store());
+  BootCounterEntropy entropy(1);
+  ControllerLink link(link_config, port, store.store(), entropy);
   SimulatedRobotConfig robot_config;
   robot_config.joint_count = grid.joint_count();
   const JointAngles start = free_configuration(grid, sequence.maps.front());
@@ -191,8 +193,11 @@ void controller_cycle_with(benchmark::State& state, int delta_every, bool sliced
   config.min_healthy_cameras = 1;
   SafetyCycle cycle(grid, config, robot, clock, link, store.store(), watchdog);
   ScriptedCoprocessor source(grid.fingerprint(), kLuts, kSession, cells);
-  // The session and the first map, untimed.
-  port.load({source.handshake(clock.now)});
+  // The session and the first map, untimed. The link's challenge is the boot counter's first.
+  BootCounterEntropy same_as_the_link(1);
+  std::uint64_t challenge = 0;
+  (void)same_as_the_link.draw(challenge);
+  port.load({source.handshake(clock.now), source.answer(challenge, clock.now)});
   double planned[kMaxJoints] = {};
   for (std::uint32_t j = 0; j < 3 && j < grid.joint_count(); ++j) planned[j] = 0.5 - 0.4 * j;
   (void)cycle.run(planned, true);

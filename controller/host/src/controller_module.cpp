@@ -11,6 +11,7 @@
 #include "safecell/controller/host/map_store_memory.hpp"
 #include "safecell/controller/host/planner_memory.hpp"
 #include "safecell/controller/host/simulated_robot.hpp"
+#include "safecell/controller/host/system_entropy.hpp"
 #include "safecell/controller/host/udp_link_port.hpp"
 #include "safecell/controller/map_view.hpp"
 #include "safecell/cspace/cell_bits.hpp"
@@ -74,7 +75,7 @@ struct ControllerModule::Parts {
                   ? MapStoreLayout::compressed(grid.cell_count(), config.pool_blocks)
                   : MapStoreLayout::of(grid.cell_count())),
         port(config.link.listen, config.link.coprocessor),
-        link(link_config(config, grid), port, store.store()),
+        link(link_config(config, grid), port, store.store(), entropy),
         robot(config.robot),
         clock(time),
         watchdog(watchdog_config(config)),
@@ -133,6 +134,7 @@ struct ControllerModule::Parts {
   CspaceGrid grid;
   HostMapStore store;
   UdpLinkPort port;
+  SystemEntropy entropy;
   ControllerLink link;
   SimulatedRobot robot;
   HostClock clock;

@@ -14,22 +14,47 @@ constexpr std::uint32_t kCameras = 4;  // the scripted cell's cameras, all of th
 }  // namespace
 
 ScriptedCoprocessor::ScriptedCoprocessor(std::uint64_t grid_fingerprint,
-                                         std::uint64_t lut_fingerprint, std::uint64_t session,
+                                         std::uint64_t lut_fingerprint, std::uint64_t opening,
                                          CellIndex cells)
     : grid_(grid_fingerprint),
       lut_(lut_fingerprint),
-      session_(session),
+      opening_(opening),
       cells_(cells),
-      sealer_({1, 2, session, configuration_fingerprint(grid_fingerprint, lut_fingerprint)}) {}
+      sealer_({1, 2, opening, configuration_fingerprint(grid_fingerprint, lut_fingerprint)}) {}
 
 ScriptedCoprocessor::Frame ScriptedCoprocessor::handshake(std::uint64_t now_ns) {
+  return handshake_frame(0, now_ns);
+}
+
+ScriptedCoprocessor::Frame ScriptedCoprocessor::answer(std::uint64_t challenge,
+                                                       std::uint64_t now_ns) {
+  Frame frame = handshake_frame(challenge, now_ns);
+  sealer_ = FrameSealer({1, 2, opening_ ^ challenge, configuration_fingerprint(grid_, lut_)});
+  return frame;
+}
+
+ScriptedCoprocessor::Frame ScriptedCoprocessor::handshake_frame(std::uint64_t challenge,
+                                                                std::uint64_t now_ns) {
+  sealer_ = FrameSealer({1, 2, opening_, configuration_fingerprint(grid_, lut_)});
   message_ = safecell_v1_Message_init_zero;
   message_.which_body = safecell_v1_Message_handshake_tag;
   message_.body.handshake.protocol_version = kProtocolVersion;
-  message_.body.handshake.session_id = session_;
+  message_.body.handshake.session_id = opening_;
   message_.body.handshake.grid_fingerprint = grid_;
   message_.body.handshake.lut_fingerprint = lut_;
+  message_.body.handshake.challenge = challenge;
   return seal(now_ns, 0, kFrameFlagHandshake);
+}
+
+std::uint64_t ScriptedCoprocessor::challenge_in(const Frame& frame) {
+  const Result<FrameView, LinkFault> opened = open_frame(frame.data(), frame.size(), 0);
+  if (!opened.ok() || !opened.value().is_handshake()) return 0;
+  safecell_v1_Message message = safecell_v1_Message_init_zero;
+  if (decode_message(opened.value().payload, opened.value().payload_size, message) != Status::kOk ||
+      message.which_body != safecell_v1_Message_handshake_tag) {
+    return 0;
+  }
+  return message.body.handshake.challenge;
 }
 
 std::vector<ScriptedCoprocessor::Frame> ScriptedCoprocessor::update(

@@ -65,11 +65,12 @@ const char* fault_cause_name(safecell_v1_FaultCause cause) noexcept {
   }
 }
 
-ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& port,
-                               MapStore& store) noexcept
+ControllerLink::ControllerLink(const ControllerLinkConfig& config, LinkPort& port, MapStore& store,
+                               EntropyPort& entropy) noexcept
     : config_(config),
       port_(port),
       store_(store),
+      entropy_(entropy),
       limits_{config.max_data_age_ns, config.max_clock_lead_ns, config.watchdog_ns},
       fingerprint_(configuration_fingerprint(config.grid_fingerprint, config.lut_fingerprint)),
       checker_(LinkEndpoints{}, limits_, 0),
@@ -131,19 +132,13 @@ void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_
     detected({LinkError::kInsertion, header.source_id}, now_ns);
     return;
   }
-  if (session_up_ && header.session_id == session_id_ &&
-      header.sequence <= checker_.last_sequence()) {
-    // The handshake of the session in place, again (a duplicate or a replay): refused like any
-    // repeated frame, and the session and its map stay as they are.
-    detected({LinkError::kRepetition, header.sequence}, now_ns);
-    return;
-  }
   if (decode_message(frame.payload, frame.payload_size, incoming_) != Status::kOk ||
       incoming_.which_body != safecell_v1_Message_handshake_tag) {
     detected({LinkError::kCorruption, 0}, now_ns);
     return;
   }
   const safecell_v1_Handshake& offered = incoming_.body.handshake;
+  const std::uint64_t opening = header.session_id;
   LinkFault refusal{};
   if (offered.protocol_version != kProtocolVersion) {
     refusal = {LinkError::kWrongConfiguration, offered.protocol_version};
@@ -151,42 +146,98 @@ void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_
     refusal = {LinkError::kWrongConfiguration, offered.grid_fingerprint};
   } else if (offered.lut_fingerprint != config_.lut_fingerprint) {
     refusal = {LinkError::kWrongConfiguration, offered.lut_fingerprint};
-  } else if (offered.session_id != header.session_id || offered.session_id == 0) {
+  } else if (offered.session_id != opening || opening == 0) {
     refusal = {LinkError::kMasquerade, offered.session_id};
   }
-  // The answer names this end's configuration either way, so the coprocessor can say what
-  // differs; it goes out in the offered session, sealed as a handshake frame.
-  const LinkEndpoints endpoints{config_.controller_id, config_.coprocessor_id, header.session_id,
-                                fingerprint_};
   if (refusal.error != LinkError::kNone) {
-    detected(refusal, now_ns);  // the session in place, if any, stays as it is
-  } else {
-    // A new session: the held map belongs to the old one (or none) and is forgotten.
-    session_up_ = true;
-    session_id_ = header.session_id;
-    checker_ = FrameChecker(endpoints, limits_, now_ns, header.sequence);
-    sealer_ = FrameSealer(endpoints);
-    store_.reset();
-    map_applied_ns_ = 0;
+    // Refused with this end's configuration named, so the coprocessor can say what differs; the
+    // session in place, if any, stays as it is.
+    detected(refusal, now_ns);
+    answer_handshake(opening, false, 0, now_ns);
+    return;
   }
+  if (offered.challenge == 0) {
+    // An opening: it gets this opening's challenge; nothing else changes.
+    if (!challenge_for(opening, now_ns)) {
+      detected({LinkError::kWrongConfiguration, 0}, now_ns);  // no fresh challenge: no session
+      answer_handshake(opening, false, 0, now_ns);
+      return;
+    }
+    answer_handshake(opening, false, challenge_, now_ns);
+    return;
+  }
+  if (challenge_ == 0 || opening != opening_ || offered.challenge != challenge_ ||
+      now_ns - challenge_ns_ > config_.challenge_lifetime_ns) {
+    // Not the answer to the challenge this controller gave out last (a recording of an earlier
+    // opening, a duplicate, or too late): refused without an answer, the session in place kept.
+    ++stale_answers_;
+    detected({LinkError::kRepetition, offered.challenge}, now_ns);
+    return;
+  }
+  open_session(now_ns);
+}
+
+bool ControllerLink::challenge_for(std::uint64_t opening, std::uint64_t now_ns) noexcept {
+  if (challenge_ != 0 && opening == opening_ &&
+      now_ns - challenge_ns_ <= config_.challenge_lifetime_ns) {
+    return true;  // the same opening again (its frame resent): the same challenge
+  }
+  challenge_ = 0;
+  opening_ = 0;
+  // The session id (opening XOR challenge) must be neither 0 nor the opening itself.
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    std::uint64_t drawn = 0;
+    if (!entropy_.draw(drawn)) return false;
+    if (drawn != 0 && drawn != opening) {
+      challenge_ = drawn;
+      opening_ = opening;
+      challenge_ns_ = now_ns;
+      ++challenges_given_;
+      return true;
+    }
+  }
+  return false;
+}
+
+void ControllerLink::open_session(std::uint64_t now_ns) noexcept {
+  const std::uint64_t opening = opening_;
+  const std::uint64_t challenge = challenge_;
+  // The challenge is used up: an answer to it again is a repetition.
+  opening_ = 0;
+  challenge_ = 0;
+  // A new session: the held map belongs to the old one (or none) and is forgotten. Its frames
+  // are numbered from 1 in both directions.
+  const LinkEndpoints endpoints{config_.controller_id, config_.coprocessor_id, opening ^ challenge,
+                                fingerprint_};
+  session_up_ = true;
+  session_id_ = endpoints.session_id;
+  checker_ = FrameChecker(endpoints, limits_, now_ns, 0);
+  sealer_ = FrameSealer(endpoints);
+  store_.reset();
+  map_applied_ns_ = 0;
+  answer_handshake(opening, true, challenge, now_ns);
+}
+
+void ControllerLink::answer_handshake(std::uint64_t opening, bool accepted, std::uint64_t challenge,
+                                      std::uint64_t now_ns) noexcept {
   reply_ = safecell_v1_Message_init_zero;
   reply_.which_body = safecell_v1_Message_handshake_tag;
   safecell_v1_Handshake& answer = reply_.body.handshake;
   answer.protocol_version = kProtocolVersion;
-  answer.session_id = header.session_id;
+  answer.session_id = opening;
   answer.source_id = config_.controller_id;
   answer.destination_id = config_.coprocessor_id;
   answer.grid_fingerprint = config_.grid_fingerprint;
   answer.lut_fingerprint = config_.lut_fingerprint;
   answer.watchdog_us = static_cast<std::uint32_t>(config_.watchdog_ns / 1000);
   answer.max_data_age_us = static_cast<std::uint32_t>(config_.max_data_age_ns / 1000);
-  answer.accepted = refusal.error == LinkError::kNone;
-  if (answer.accepted) {
-    send(sealer_, now_ns, now_ns, kFrameFlagHandshake);
-  } else {
-    FrameSealer refusal_sealer(endpoints);
-    send(refusal_sealer, now_ns, now_ns, kFrameFlagHandshake);
-  }
+  answer.accepted = accepted;
+  answer.challenge = challenge;
+  // Handshake frames go out in the opening's number, each its own (the session's sealer numbers
+  // only the session's frames).
+  FrameSealer handshake_sealer(
+      {config_.controller_id, config_.coprocessor_id, opening, fingerprint_});
+  send(handshake_sealer, now_ns, now_ns, kFrameFlagHandshake);
 }
 
 void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns) noexcept {

@@ -15,7 +15,7 @@ std::uint64_t steady_now_ns() {
                                         .count());
 }
 
-std::uint64_t random_session_id() {
+std::uint64_t random_opening() {
   std::random_device device;
   std::uint64_t id = 0;
   while (id == 0) id = (std::uint64_t{device()} << 32) ^ device();
@@ -40,14 +40,15 @@ std::string hex(std::uint64_t value) {
 }  // namespace
 
 CoprocessorLink::CoprocessorLink(const CoprocessorLinkConfig& config, DatagramTransport& transport,
-                                 std::uint64_t session_id, Clock clock)
+                                 std::uint64_t opening, Clock clock)
     : config_(config),
       transport_(transport),
       clock_(clock ? std::move(clock) : Clock(steady_now_ns)),
-      session_id_(session_id != 0 ? session_id : random_session_id()),
+      opening_(opening != 0 ? opening : random_opening()),
+      session_id_(opening_),
       fingerprint_(configuration_fingerprint(config.grid_fingerprint, config.lut_fingerprint)),
-      sealer_({config.coprocessor_id, config.controller_id, session_id_, fingerprint_}),
-      checker_({config.coprocessor_id, config.controller_id, session_id_, fingerprint_},
+      sealer_({config.coprocessor_id, config.controller_id, opening_, fingerprint_}),
+      checker_({config.coprocessor_id, config.controller_id, opening_, fingerprint_},
                kUnsyncedLimits, 0),
       publisher_(config.cell_count, config.publisher),
       latch_(config.latch_window_ns),
@@ -73,26 +74,16 @@ void CoprocessorLink::open(std::chrono::milliseconds timeout) {
   // simulated clock that only moves when its driver says (the closed-loop validation).
   using Steady = std::chrono::steady_clock;
   const Steady::time_point deadline = Steady::now() + timeout;
-  v1::Message hello;
-  v1::Handshake& handshake = *hello.mutable_handshake();
-  handshake.set_protocol_version(kProtocolVersion);
-  handshake.set_session_id(session_id_);
-  handshake.set_source_id(config_.coprocessor_id);
-  handshake.set_destination_id(config_.controller_id);
-  handshake.set_grid_fingerprint(config_.grid_fingerprint);
-  handshake.set_lut_fingerprint(config_.lut_fingerprint);
-  handshake.set_map_cycle_us(config_.map_cycle_us);
-  handshake.set_control_cycle_us(config_.control_cycle_us);
-  handshake.set_watchdog_us(config_.watchdog_us);
-  handshake.set_max_data_age_us(config_.max_data_age_us);
-  handshake.set_keyframe_after_cycles(config_.publisher.keyframe_after_cycles);
+  const v1::Message opening = handshake_message(0);
+  // The opening goes out again every 200 ms until the session is up: the controller answers it
+  // with the same challenge while that is valid, and handle() answers each new challenge once.
   while (!accepted_) {
     if (Steady::now() > deadline) {
       throw LinkSetupError("link: the controller (id " + std::to_string(config_.controller_id) +
                            ") did not answer the handshake within " +
                            std::to_string(timeout.count()) + " ms");
     }
-    send_message(hello, 0, kFrameFlagHandshake);
+    send_message(opening, 0, kFrameFlagHandshake);
     const Steady::time_point resend_at = Steady::now() + std::chrono::milliseconds(200);
     while (!accepted_ && !refused_because_ && Steady::now() < resend_at) {
       poll(std::chrono::milliseconds(20));
@@ -117,12 +108,35 @@ void CoprocessorLink::open(std::chrono::milliseconds timeout) {
        std::uint64_t{config_.watchdog_us} * 1000});
 }
 
+v1::Message CoprocessorLink::handshake_message(std::uint64_t challenge) const {
+  v1::Message message;
+  v1::Handshake& handshake = *message.mutable_handshake();
+  handshake.set_protocol_version(kProtocolVersion);
+  handshake.set_session_id(opening_);
+  handshake.set_source_id(config_.coprocessor_id);
+  handshake.set_destination_id(config_.controller_id);
+  handshake.set_grid_fingerprint(config_.grid_fingerprint);
+  handshake.set_lut_fingerprint(config_.lut_fingerprint);
+  handshake.set_map_cycle_us(config_.map_cycle_us);
+  handshake.set_control_cycle_us(config_.control_cycle_us);
+  handshake.set_watchdog_us(config_.watchdog_us);
+  handshake.set_max_data_age_us(config_.max_data_age_us);
+  handshake.set_keyframe_after_cycles(config_.publisher.keyframe_after_cycles);
+  handshake.set_challenge(challenge);
+  return message;
+}
+
+void CoprocessorLink::number_frames_in(std::uint64_t id) {
+  session_id_ = id;
+  sealer_ = FrameSealer({config_.coprocessor_id, config_.controller_id, id, fingerprint_});
+  checker_ = FrameChecker({config_.coprocessor_id, config_.controller_id, id, fingerprint_},
+                          kUnsyncedLimits, now(), 0);
+}
+
 void CoprocessorLink::start_new_session() {
-  session_id_ = random_session_id();
-  sealer_ = FrameSealer({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_});
-  checker_ =
-      FrameChecker({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_},
-                   kUnsyncedLimits, 0);
+  opening_ = random_opening();
+  answered_challenge_ = 0;
+  number_frames_in(opening_);
   clock_sync_ = ClockSync();
   publisher_ = MapPublisher(config_.cell_count, config_.publisher);
   latch_ = ErrorLatch(config_.latch_window_ns);
@@ -178,7 +192,7 @@ std::size_t CoprocessorLink::poll(std::chrono::microseconds wait) {
 
 void CoprocessorLink::handle_handshake_answer(const FrameView& frame) {
   v1::Message message;
-  if (frame.header.session_id != session_id_ || frame.header.source_id != config_.controller_id ||
+  if (frame.header.session_id != opening_ || frame.header.source_id != config_.controller_id ||
       frame.header.destination_id != config_.coprocessor_id ||
       !message.ParseFromArray(frame.payload, static_cast<int>(frame.payload_size)) ||
       !message.has_handshake()) {
@@ -186,15 +200,27 @@ void CoprocessorLink::handle_handshake_answer(const FrameView& frame) {
     return;
   }
   const v1::Handshake& answer = message.handshake();
+  if (accepted_) return;  // the session is up: a late answer to a resent opening changes nothing
   if (answer.accepted()) {
+    if (answer.challenge() == 0 || answer.challenge() != answered_challenge_) {
+      // An acceptance of a challenge this end did not answer: not this opening's.
+      (void)latch_.record({LinkError::kRepetition, answer.challenge()}, now());
+      return;
+    }
     accepted_ = true;
     // The controller's watchdog and data age are the session's: the joint stream is checked
     // against what the controller itself keeps to (its configuration, not this end's guess).
     if (answer.watchdog_us() > 0) config_.watchdog_us = answer.watchdog_us();
     if (answer.max_data_age_us() > 0) config_.max_data_age_us = answer.max_data_age_us();
-    checker_ =
-        FrameChecker({config_.coprocessor_id, config_.controller_id, session_id_, fingerprint_},
-                     kUnsyncedLimits, now(), frame.header.sequence);
+    number_frames_in(opening_ ^ answer.challenge());
+    return;
+  }
+  if (answer.challenge() != 0) {
+    // The controller's challenge: answered once (a resent opening brings the same one again).
+    if (answer.challenge() != answered_challenge_) {
+      answered_challenge_ = answer.challenge();
+      send_message(handshake_message(answered_challenge_), 0, kFrameFlagHandshake);
+    }
     return;
   }
   std::string why = "link: the controller refused the session:";
@@ -209,6 +235,11 @@ void CoprocessorLink::handle_handshake_answer(const FrameView& frame) {
   if (answer.lut_fingerprint() != config_.lut_fingerprint) {
     why += " its LUT fingerprint is " + hex(answer.lut_fingerprint()) + ", ours " +
            hex(config_.lut_fingerprint) + " (recommission the controller with these LUTs);";
+  }
+  if (why.back() == ':') {
+    why +=
+        " its configuration agrees, but it gave no challenge (its source of session "
+        "challenges failed: see its log);";
   }
   refused_because_ = why;
 }

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "safecell/controller/boot_counter_entropy.hpp"
 #include "safecell/controller/controller_link.hpp"
 #include "safecell/controller/map_store.hpp"
 #include "safecell/controller/safety_cycle.hpp"
@@ -60,7 +61,8 @@ int main() {
   SilentLink port;
   ControllerLinkConfig link_config;
   link_config.grid_fingerprint = grid.fingerprint();
-  ControllerLink link(link_config, port, store);
+  BootCounterEntropy entropy(1);
+  ControllerLink link(link_config, port, store, entropy);
   Watchdog watchdog({2'000'000, 6'000'000, 1'000'000'000});
   SafetyCycleConfig config;
   config.look_ahead.stop.joint_count = 2;

@@ -2,10 +2,14 @@
 // The controller's end of the link: the session with the coprocessor, the map updates it brings,
 // and the joint stream (with the map acknowledgement) it sends back.
 //
-//   handshake   the coprocessor opens a session (handshake frame, implicit fingerprint 0); the
+//   handshake   the coprocessor opens a session (handshake frames, implicit fingerprint 0); the
 //               controller checks the protocol version, both fingerprints and the ids against its
-//               own configuration and answers accepted or not. A new session forgets the held
-//               map: no motion until a keyframe of the new session is verified.
+//               own configuration, answers an opening with a fresh challenge from its
+//               EntropyPort, and takes the session only from the answer that echoes its current
+//               challenge (handshake.proto, protocol/SECURITY.md). Anything else (a recorded
+//               opening's answer, a challenge given out to another opening or expired) is
+//               refused as a repetition and leaves a session in place as it is. A new session
+//               forgets the held map: no motion until a keyframe of the new session is verified.
 //   data frames checked by the safety layer (frame_checker.hpp); map chunks go to the
 //               MapStore; clock echoes are answered at once; stop requests are latched.
 // Every detected communication error is counted and fed to the error latch (a second one within
@@ -20,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "safecell/controller/entropy_port.hpp"
 #include "safecell/controller/link_port.hpp"
 #include "safecell/controller/map_store.hpp"
 #include "safecell/protocol/error_latch.hpp"
@@ -37,6 +42,9 @@ struct ControllerLinkConfig {
   std::uint64_t max_data_age_ns = 150'000'000;  // a frame's capture older than this is refused
   std::uint64_t max_clock_lead_ns = 5'000'000;  // the coprocessor's clock-offset uncertainty
   std::uint64_t latch_window_ns = kDefaultLatchWindowNs;
+  // How long a challenge given out waits for its answer; a later answer is refused (the
+  // coprocessor opens again and gets a new one).
+  std::uint64_t challenge_lifetime_ns = 1'000'000'000;
   // The link's share of a control cycle, in MapStore work units (map_store.hpp; a frame read and
   // checked costs kWorkPerFrame): an update larger than that is applied over several cycles, and
   // the frames after it wait in the transport's buffer. Its measured age includes the delay.
@@ -85,7 +93,8 @@ class ControllerLink {
  public:
   static constexpr int kMaxFramesPerPoll = 64;
 
-  ControllerLink(const ControllerLinkConfig& config, LinkPort& port, MapStore& store) noexcept;
+  ControllerLink(const ControllerLinkConfig& config, LinkPort& port, MapStore& store,
+                 EntropyPort& entropy) noexcept;
 
   // One slice: goes on with the map update in work, then handles the frames waiting on the port,
   // within config.map_work_per_poll and config.max_frames_per_poll (one frame always gets through
@@ -104,7 +113,11 @@ class ControllerLink {
   void acknowledge() noexcept;
 
   bool session_up() const noexcept { return session_up_; }
+  // The session's id: the coprocessor's opening number XOR this controller's challenge.
   std::uint64_t session_id() const noexcept { return session_id_; }
+  // Openings answered with a challenge, and answers refused for not echoing the current one.
+  std::uint64_t challenges_given() const noexcept { return challenges_given_; }
+  std::uint64_t stale_answers() const noexcept { return stale_answers_; }
   // The capture time of the held map's data (controller clock); 0 without a map.
   std::uint64_t map_capture_ns() const noexcept { return store_.capture_ns(); }
   std::uint32_t healthy_cameras() const noexcept { return healthy_cameras_; }
@@ -129,6 +142,15 @@ class ControllerLink {
  private:
   void handle_datagram(const std::uint8_t* data, std::size_t size, std::uint64_t now_ns) noexcept;
   void handle_handshake(const FrameView& frame, std::uint64_t now_ns) noexcept;
+  // The challenge for an opening: the one given out to this opening while it is valid, else a
+  // fresh one. False when the entropy source failed.
+  bool challenge_for(std::uint64_t opening, std::uint64_t now_ns) noexcept;
+  // Takes the session of the opening whose challenge was answered.
+  void open_session(std::uint64_t now_ns) noexcept;
+  // Sends the handshake answer to `opening`: this end's configuration, accepted or not, and the
+  // challenge (0 in a refusal).
+  void answer_handshake(std::uint64_t opening, bool accepted, std::uint64_t challenge,
+                        std::uint64_t now_ns) noexcept;
   void handle_message(const FrameView& frame, std::uint64_t now_ns) noexcept;
   void handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
                         std::uint64_t now_ns) noexcept;
@@ -141,11 +163,18 @@ class ControllerLink {
   ControllerLinkConfig config_;
   LinkPort& port_;
   MapStore& store_;
+  EntropyPort& entropy_;
   ArrivalLimits limits_;
   std::uint64_t fingerprint_;
 
   bool session_up_ = false;
   std::uint64_t session_id_ = 0;
+  // The opening waiting for its answer (0: none), the challenge given to it and when.
+  std::uint64_t opening_ = 0;
+  std::uint64_t challenge_ = 0;
+  std::uint64_t challenge_ns_ = 0;
+  std::uint64_t challenges_given_ = 0;
+  std::uint64_t stale_answers_ = 0;
   FrameChecker checker_;
   FrameSealer sealer_;
   ErrorLatch latch_;

@@ -1,5 +1,7 @@
 #pragma once
-// The coprocessor's end of the link: opens the session (handshake), keeps the clock offset to the
+// The coprocessor's end of the link: opens the session (the handshake of protocol version 2: an
+// opening, the controller's challenge, the answer echoing it, the acceptance; handshake.proto),
+// keeps the clock offset to the
 // controller (ClockEcho), sends each cycle's map update and takes in the joint stream with its
 // acknowledgements.
 //
@@ -51,17 +53,18 @@ class CoprocessorLink {
  public:
   using Clock = std::function<std::uint64_t()>;  // ns, monotonic
 
-  // session_id: random per start (0 draws one). clock: the coprocessor's; steady_clock if empty.
+  // opening: the handshake's opening number, random per opening (0 draws one; a test may fix
+  // it). clock: the coprocessor's; steady_clock if empty.
   CoprocessorLink(const CoprocessorLinkConfig& config, DatagramTransport& transport,
-                  std::uint64_t session_id = 0, Clock clock = {});
+                  std::uint64_t opening = 0, Clock clock = {});
 
   // Handshake, then config.echo_samples clock echoes. Throws LinkSetupError when the controller
   // refuses (naming what differs) or does not answer within `timeout`.
   void open(std::chrono::milliseconds timeout);
 
-  // Forgets the session (a controller that restarted knows it no more): a new random session id,
-  // the sequence, clock offset, error latch and map versions from the start; open() again next.
-  // The joint-state handlers stay.
+  // Forgets the session (a controller that restarted knows it no more): a new random opening
+  // number, the sequence, clock offset, error latch and map versions from the start; open()
+  // again next. The joint-state handlers stay.
   void start_new_session();
 
   // Sends this cycle's map, its data captured at `capture_ns` (coprocessor clock), with the
@@ -83,6 +86,8 @@ class CoprocessorLink {
   // returns how many datagrams it handled.
   std::size_t poll(std::chrono::microseconds wait);
 
+  // The session's id once the controller accepted it (opening number XOR its challenge), the
+  // opening number before.
   std::uint64_t session_id() const { return session_id_; }
   // The configuration given, with the controller's watchdog and maximum data age once it has
   // accepted the session (its handshake answer names them).
@@ -103,12 +108,18 @@ class CoprocessorLink {
   // Handles one datagram; true when it was a valid frame of the session.
   bool handle(std::span<const std::uint8_t> datagram);
   void handle_handshake_answer(const FrameView& frame);
+  // The opening (challenge 0) or the answer to a challenge.
+  v1::Message handshake_message(std::uint64_t challenge) const;
+  // Sealer and checker for frames in session `id`.
+  void number_frames_in(std::uint64_t id);
 
   CoprocessorLinkConfig config_;
   DatagramTransport& transport_;
   Clock clock_;
+  std::uint64_t opening_;
   std::uint64_t session_id_;
   std::uint64_t fingerprint_;
+  std::uint64_t answered_challenge_ = 0;  // the last challenge answered (0: none yet)
   FrameSealer sealer_;
   FrameChecker checker_;
   ClockSync clock_sync_;

@@ -7,7 +7,8 @@
 //   3       1      flags: bit 0 = handshake frame (kFrameFlagHandshake); the others are 0
 //   4       4      source id
 //   8       4      destination id
-//   12      8      session id (random per coprocessor start, from the handshake)
+//   12      8      session id (the handshake's opening number; the session's frames carry it
+//                  XOR the controller's challenge)
 //   20      8      sequence number (1, 2, ... per session and direction)
 //   28      8      send time, ns in the sender's clock
 //   36      8      capture time of the data, ns in the sender's clock (exposure for a map,
@@ -30,7 +31,8 @@
 
 namespace safecell {
 
-inline constexpr std::uint8_t kProtocolVersion = 1;
+// 2: the session start answers the controller's challenge (handshake.proto). 1 is refused.
+inline constexpr std::uint8_t kProtocolVersion = 2;
 inline constexpr std::size_t kFrameHeaderBytes = 44;
 inline constexpr std::size_t kFrameCrcBytes = 4;
 inline constexpr std::size_t kFrameOverheadBytes = kFrameHeaderBytes + kFrameCrcBytes;

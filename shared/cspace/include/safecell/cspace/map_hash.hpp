@@ -15,6 +15,7 @@
 
 #include <cstdint>
 
+#include "safecell/base/mix64.hpp"
 #include "safecell/cspace/cspace_grid.hpp"
 
 namespace safecell {
@@ -29,14 +30,7 @@ constexpr std::uint32_t map_hash_blocks(std::uint32_t cell_count) noexcept {
 
 // The mixing step, a block's starting value and the final step, for receivers that hash a map as
 // they rebuild it (the controller's compressed store hashes each block it stores).
-constexpr std::uint64_t map_hash_mix(std::uint64_t x) noexcept {
-  x ^= x >> 33;
-  x *= 0xFF51AFD7ED558CCDull;
-  x ^= x >> 33;
-  x *= 0xC4CEB9FE1A85EC53ull;
-  x ^= x >> 33;
-  return x;
-}
+constexpr std::uint64_t map_hash_mix(std::uint64_t x) noexcept { return mix64(x); }
 constexpr std::uint64_t map_block_hash_seed(std::uint32_t block) noexcept {
   return map_hash_mix(std::uint64_t{block} + 1);
 }

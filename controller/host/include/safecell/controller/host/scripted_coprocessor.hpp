@@ -18,11 +18,21 @@ class ScriptedCoprocessor {
  public:
   using Frame = std::vector<std::uint8_t>;
 
+  // opening: the handshake's opening number (the session id is it XOR the controller's
+  // challenge).
   ScriptedCoprocessor(std::uint64_t grid_fingerprint, std::uint64_t lut_fingerprint,
-                      std::uint64_t session, CellIndex cells);
+                      std::uint64_t opening, CellIndex cells);
 
   // The session's opening handshake, sent at `now_ns`.
   Frame handshake(std::uint64_t now_ns);
+  // The answer to the controller's challenge (challenge_in() of its reply to the opening). The
+  // frames sealed after it are the session's.
+  Frame answer(std::uint64_t challenge, std::uint64_t now_ns);
+  // The challenge a controller's handshake frame carries; 0 when the frame is none, a refusal,
+  // or does not open.
+  static std::uint64_t challenge_in(const Frame& frame);
+  // The session id once answer() was called.
+  std::uint64_t session() const { return sealer_.endpoints().session_id; }
   // Every chunk of one map update, sealed at `now_ns` with the capture time `capture_ns`: a delta
   // from `base` (whose version is base_version), or a keyframe when base is null. Each chunk
   // carries at most run_bytes of runs (the protocol's most by default). wrong_hash: the hash of
@@ -44,11 +54,13 @@ class ScriptedCoprocessor {
   static constexpr std::size_t kMaxRunBytes = sizeof(safecell_v1_MapChunk{}.runs.bytes);
 
  private:
+  // A handshake frame of the opening (challenge 0) or the answer to `challenge`.
+  Frame handshake_frame(std::uint64_t challenge, std::uint64_t now_ns);
   Frame seal(std::uint64_t now_ns, std::uint64_t capture_ns, std::uint8_t flags = 0);
 
   std::uint64_t grid_;
   std::uint64_t lut_;
-  std::uint64_t session_;
+  std::uint64_t opening_;
   CellIndex cells_;
   std::uint32_t speed_reduction_ = 0;
   FrameSealer sealer_;
