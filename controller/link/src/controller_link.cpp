@@ -317,10 +317,10 @@ void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) no
   ++updates_refused_;
   last_map_refusal_ = offer.refusal;
   if (offer.refusal == MapRefusal::kHashMismatch) ++hash_mismatches_;
-  // A torn update is repaired by the next delta (against the version acknowledged); a map that
-  // disagrees with the sender's needs a keyframe.
-  if (offer.refusal == MapRefusal::kHashMismatch || offer.refusal == MapRefusal::kBaseMismatch ||
-      offer.refusal == MapRefusal::kBadChunk || offer.refusal == MapRefusal::kBaseInexact) {
+  // The coprocessor bases each delta on the update it sent last (MapPublisher): any update that
+  // is not taken whole, and any base this end does not hold, asks it for a repair from the
+  // version held here. (A version not above the held one is a repetition: nothing to repair.)
+  if (offer.refusal != MapRefusal::kStaleVersion) {
     reply_ = safecell_v1_Message_init_zero;
     reply_.which_body = safecell_v1_Message_keyframe_request_tag;
     reply_.body.keyframe_request.held_map_version = store_.version();

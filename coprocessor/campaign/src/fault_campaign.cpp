@@ -325,6 +325,7 @@ nlohmann::json json_of(const TrialResult& trial) {
                         {"injected", trial.injected},
                         {"detected", trial.detected},
                         {"maps_refused", trial.maps_refused},
+                        {"updates_refused_without_fault", trial.refused_without_fault},
                         {"stops", trial.stops},
                         {"maps_applied", trial.maps_applied},
                         {"wrong_maps_accepted", trial.wrong_maps},
@@ -364,8 +365,13 @@ CampaignResult run_fault_campaign(const CampaignSensing& sensing, const Campaign
 
 std::string campaign_json(const CampaignResult& result) {
   nlohmann::json trials = nlohmann::json::array();
-  for (const TrialResult& trial : result.trials) trials.push_back(json_of(trial));
+  std::uint64_t refused_without_fault = 0;
+  for (const TrialResult& trial : result.trials) {
+    trials.push_back(json_of(trial));
+    refused_without_fault += trial.refused_without_fault;
+  }
   const nlohmann::json out = {{"passed", result.passed()},
+                              {"updates_refused_without_fault", refused_without_fault},
                               {"bounds",
                                {{"stop_ms", result.bounds.stop_ms},
                                 {"latched_stop_ms", result.bounds.latched_stop_ms},

@@ -97,13 +97,15 @@ void collect_reactions(const TrialRecord& record, TrialResult& result) {
     }
     std::uint64_t refused_before = 0;
     for (const TraceMapRefusal& refusal : trace.map_refusals) {
-      if (refusal.t_ns < record.fault_begin_ns) {
-        refused_before = refusal.refused_so_far;
-        continue;
-      }
-      result.maps_refused +=
+      const std::uint64_t added =
           refusal.refused_so_far - std::min(refused_before, refusal.refused_so_far);
       refused_before = refusal.refused_so_far;
+      // Before the fault, and throughout a camera fault, nothing disturbs the link.
+      if (refusal.t_ns < record.fault_begin_ns || site_of(record.fault) == FaultSite::kCameras) {
+        result.refused_without_fault += added;
+      }
+      if (refusal.t_ns < record.fault_begin_ns) continue;
+      result.maps_refused += added;
       if (refusal.t_ns <= causes_until) note_cause(result.causes, refusal.reason);
     }
     for (const TraceStopRequest& request : trace.stop_requests) {
@@ -205,6 +207,10 @@ TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds) {
   check_maps(record, result);
   check_motion_age(record, bounds, result);
   collect_reactions(record, result);
+  if (result.refused_without_fault > 0) {
+    result.failures.push_back(std::to_string(result.refused_without_fault) +
+                              " map update(s) refused while the link had no fault");
+  }
 
   const std::vector<std::string>& expected = expected_causes(record.fault);
   const bool named = std::any_of(

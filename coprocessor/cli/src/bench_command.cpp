@@ -261,6 +261,9 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
         << fixed(e2e.to_sent_p99_ms, 3) << " ms; p50 features " << fixed(e2e.features_p50_ms, 3)
         << " ms, fusion " << fixed(e2e.fusion_p50_ms, 3) << " ms, the rest "
         << fixed(e2e.rest_p50_ms, 3) << " ms); " << e2e.updates_not_applied << " not applied, "
+        << e2e.updates_refused_without_fault << " refused without a fault; map age at the "
+        << "controller p50 " << fixed(e2e.map_age_p50_ms, 1) << " ms, p99 "
+        << fixed(e2e.map_age_p99_ms, 1) << " ms, worst " << fixed(e2e.map_age_max_ms, 1) << " ms; "
         << e2e.all_forbidden_frames << " all forbidden; back to back the "
         << "service takes " << fixed(e2e.service_fps, 0) << " frames/s, the controller applies "
         << fixed(e2e.sustained_fps, 0) << " maps/s\n";
@@ -323,6 +326,10 @@ void run_bench(const BenchOptions& options, std::ostream& out, std::ostream& pro
   report["e2e_sent_to_applied_min_ms"] = e2e.sent_to_applied_min_ms;
   report["e2e_clock_uncertainty_max_ms"] = e2e.clock_uncertainty_max_ms;
   report["e2e_updates_not_applied"] = e2e.updates_not_applied;
+  report["e2e_updates_refused_without_fault"] = e2e.updates_refused_without_fault;
+  report["e2e_map_age_p50_ms"] = e2e.map_age_p50_ms;
+  report["e2e_map_age_p99_ms"] = e2e.map_age_p99_ms;
+  report["e2e_map_age_max_ms"] = e2e.map_age_max_ms;
   report["e2e_all_forbidden_frames"] = e2e.all_forbidden_frames;
   report["service_fps"] = e2e.service_fps;
   report["sustained_fps"] = e2e.sustained_fps;

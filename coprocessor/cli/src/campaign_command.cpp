@@ -88,6 +88,11 @@ void print_table(const CampaignResult& result, std::ostream& out) {
                    causes.empty() ? "-" : causes, trial.passed() ? "passed" : "FAILED"});
   }
   table.print(out);
+  std::uint64_t refused_without_fault = 0;
+  for (const TrialResult& trial : result.trials)
+    refused_without_fault += trial.refused_without_fault;
+  out << "map updates refused while the link had no fault: " << refused_without_fault
+      << " (must be 0)\n";
   out << "bounds: held within " << fixed(result.bounds.stop_ms, 0)
       << " ms of the fault (T_wd + a late cycle), within "
       << fixed(result.bounds.latched_stop_ms, 0)

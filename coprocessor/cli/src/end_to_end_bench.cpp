@@ -104,6 +104,17 @@ EndToEndFigures measure_end_to_end(bool quick, std::ostream& log) {
     service.serve_link(next);
   }
   service.serve_link(Clock::now() + std::chrono::milliseconds(50));
+  figures.updates_refused_without_fault = session.link().repair_requests();
+  std::vector<double> map_age_ms;
+  const double paced_from_s = exposure_of.empty() ? 0.0 : exposure_of.begin()->second;
+  for (const JointRecord& sample : record.joints) {
+    const auto exposure = exposure_of.find(sample.applied_map_version);
+    if (sample.time_s < paced_from_s || exposure == exposure_of.end()) continue;
+    map_age_ms.push_back((sample.time_s - exposure->second) * 1e3);
+  }
+  figures.map_age_p50_ms = percentile(map_age_ms, 0.5);
+  figures.map_age_p99_ms = percentile(map_age_ms, 0.99);
+  figures.map_age_max_ms = percentile(map_age_ms, 1.0);
   std::vector<double> latency_ms;
   std::map<std::uint64_t, double> applied_at;
   for (const JointRecord& sample : record.joints) {

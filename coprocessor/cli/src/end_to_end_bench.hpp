@@ -25,6 +25,14 @@ struct EndToEndFigures {
   double fusion_p50_ms = 0.0;
   double rest_p50_ms = 0.0;
   std::size_t updates_not_applied = 0;  // of those frames, maps the controller never held
+  // Updates the controller refused (its repair requests), with no fault on the link: must be 0.
+  std::uint64_t updates_refused_without_fault = 0;
+  // The age of the map the controller held, at each of its joint states while the frames came at
+  // 30 frames/s: now - the exposure of the held map (what the watchdog and the data-age check
+  // see, and what a refused update raises).
+  double map_age_p50_ms = 0.0;
+  double map_age_p99_ms = 0.0;
+  double map_age_max_ms = 0.0;
   // Over the updates applied: the least of (applied in the controller - sending began), the
   // controller's clock brought onto the coprocessor's. Below 0 by more than the clock offset's
   // error means a map was applied before it was sent: the latency figures would be wrong.

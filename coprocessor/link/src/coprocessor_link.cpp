@@ -140,6 +140,7 @@ void CoprocessorLink::start_new_session() {
   clock_sync_ = ClockSync();
   publisher_ = MapPublisher(config_.cell_count, config_.publisher);
   latch_ = ErrorLatch(config_.latch_window_ns);
+  repair_requests_ = 0;
   accepted_ = false;
   refused_because_.reset();
   last_joint_state_.reset();
@@ -296,7 +297,8 @@ bool CoprocessorLink::handle(std::span<const std::uint8_t> datagram) {
       break;
     }
     case v1::Message::kKeyframeRequest:
-      publisher_.request_keyframe();
+      ++repair_requests_;
+      publisher_.request_repair(message.keyframe_request().held_map_version());
       break;
     case v1::Message::kFaultReport:
       controller_faults_.push_back(message.fault_report());

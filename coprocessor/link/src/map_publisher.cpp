@@ -35,6 +35,25 @@ void MapPublisher::acknowledge(std::uint64_t version) {
   }
 }
 
+void MapPublisher::request_repair(std::uint64_t held_version) {
+  const bool repair_waiting = repair_pending_ && held_version == repair_base_;
+  const bool repair_just_sent = !repair_pending_ && repair_version_ != 0 &&
+                                held_version == repair_base_ &&
+                                last_version_ <= repair_version_ + 1;
+  if (repair_waiting || repair_just_sent) {
+    ++repeated_requests_;  // the repair from this version is on its way already
+    return;
+  }
+  ++repairs_;
+  repair_pending_ = true;
+  repair_base_ = held_version;
+  if (held_version == 0 || held_version > last_version_ || sent(held_version) == nullptr) {
+    keyframe_requested_ = true;
+  } else {
+    base_version_ = held_version;
+  }
+}
+
 MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_cameras,
                                 std::uint32_t camera_count,
                                 std::uint32_t speed_reduction_permille) {
@@ -47,7 +66,7 @@ MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_camera
     throw std::invalid_argument("map publisher: a map of " + std::to_string(map.cell_count()) +
                                 " cells for a grid of " + std::to_string(cell_count_));
   }
-  const CellSet* base = acknowledged_ != 0 ? sent(acknowledged_) : nullptr;
+  const CellSet* base = base_version_ != 0 ? sent(base_version_) : nullptr;
   // Acknowledgements run one cycle or so behind; this counts cycles in which none came at all.
   const bool ack_stalled = ++cycles_since_ack_ > settings_.keyframe_after_cycles;
   const bool keyframe = keyframe_requested_ || base == nullptr || ack_stalled;
@@ -56,6 +75,10 @@ MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_camera
 
   MapUpdate update;
   update.version = ++last_version_;
+  if (repair_pending_) {
+    repair_pending_ = false;
+    repair_version_ = update.version;
+  }
   update.keyframe = keyframe;
   update.hash = map_hash(map.words().data(), cell_count_);
   std::vector<std::uint8_t> runs(settings_.runs_per_chunk_bytes);
@@ -70,7 +93,7 @@ MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_camera
     v1::MapChunk& chunk = update.chunks.emplace_back();
     chunk.set_kind(keyframe ? v1::MAP_UPDATE_KIND_KEYFRAME : v1::MAP_UPDATE_KIND_DELTA);
     chunk.set_map_version(update.version);
-    chunk.set_base_version(keyframe ? 0 : acknowledged_);
+    chunk.set_base_version(keyframe ? 0 : base_version_);
     chunk.set_map_hash(map_hash_with_speed_reduction(
         map_hash_with_cameras(update.hash, healthy_cameras, camera_count),
         speed_reduction_permille));
@@ -88,6 +111,7 @@ MapUpdate MapPublisher::publish(const CellSet& map, std::uint32_t healthy_camera
   }
   history_.emplace_back(update.version, map);
   while (history_.size() > settings_.history) history_.pop_front();
+  base_version_ = update.version;  // the next delta follows this one (in order, see above)
   return update;
 }
 

@@ -56,8 +56,11 @@ struct TrialResult {
   std::uint64_t injected = 0;
   std::uint64_t detected = 0;      // link errors the controller logged from the fault's start
   std::uint64_t maps_refused = 0;  // whole map updates it refused from then (hash, base, ...)
-  std::uint64_t stops = 0;         // times the robot was held from the fault's start
-  std::optional<double> stop_ms;   // the first hold, from the fault's start
+  // Updates it refused while the link had no fault (before the fault, and in camera trials): a
+  // failure when not 0 (MapPublisher: on a clean link every delta finds its base).
+  std::uint64_t refused_without_fault = 0;
+  std::uint64_t stops = 0;        // times the robot was held from the fault's start
+  std::optional<double> stop_ms;  // the first hold, from the fault's start
   std::uint64_t maps_applied = 0;
   std::uint64_t wrong_maps = 0;
   std::uint64_t degraded_maps = 0;  // applied with degraded blocks: not compared by hash

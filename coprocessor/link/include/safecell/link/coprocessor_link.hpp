@@ -100,6 +100,9 @@ class CoprocessorLink {
   const std::optional<ReceivedJointState>& last_joint_state() const { return last_joint_state_; }
   // Faults the controller reported, in order.
   const std::vector<v1::FaultReport>& controller_faults() const { return controller_faults_; }
+  // The controller's requests for a repair (KeyframeRequest): one per map update it refused or
+  // found torn, from the start of the session.
+  std::uint64_t repair_requests() const { return repair_requests_; }
 
  private:
   std::uint64_t now() const { return clock_(); }
@@ -128,6 +131,7 @@ class CoprocessorLink {
   bool accepted_ = false;
   std::optional<std::string> refused_because_;
   std::uint32_t next_echo_id_ = 1;
+  std::uint64_t repair_requests_ = 0;
   std::optional<ReceivedJointState> last_joint_state_;
   std::vector<JointStateHandler> on_joint_state_;
   std::vector<v1::FaultReport> controller_faults_;

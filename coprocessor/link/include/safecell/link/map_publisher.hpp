@@ -1,12 +1,17 @@
 #pragma once
 // The coprocessor's side of map traffic: turns each cycle's forbidden map into the chunks of one
-// map update (shared/cspace/map_chunk.hpp), a delta against the last version the controller
-// acknowledged, or a keyframe.
+// map update (shared/cspace/map_chunk.hpp), a delta or a keyframe.
 //
-// A keyframe goes out at the start, when the controller asks for one, when the acknowledged
-// version is no longer in the history, and when no acknowledgement has arrived for
-// keyframe_after_cycles cycles. So a lost frame costs one cycle: the next delta is again against
-// the version the controller holds, not the one last sent.
+// A delta is based on the version sent last: the link delivers updates in order and the
+// controller applies them in order, so on a link without faults each delta finds its base held,
+// however many updates are on their way (an update built against the last *acknowledged* version
+// was refused whenever the one before it was still in flight: about a quarter of them). When the
+// controller refuses or loses an update it asks for a repair naming the version it holds
+// (KeyframeRequest): the next update is a delta from that version while it is in the history, else
+// a keyframe. A request naming a version that a repair sent within the last two updates was based
+// on already is one the repair answers (a second refusal of the same loss) and changes nothing.
+// A keyframe goes out at the start, on a request naming a version no longer in the history (or
+// none), and when no acknowledgement has arrived for keyframe_after_cycles cycles.
 // Thread context: the coprocessor's link thread; not synchronised.
 
 #include <cstddef>
@@ -44,11 +49,17 @@ class MapPublisher {
 
   // The controller holds `version` (from its joint stream). Versions never sent are ignored.
   void acknowledge(std::uint64_t version);
-  // The controller asked for a keyframe: the next update is one.
-  void request_keyframe() { keyframe_requested_ = true; }
+  // The controller refused or lost an update and holds `held_version` (0: none): the next update
+  // repairs from it (see above).
+  void request_repair(std::uint64_t held_version);
 
   std::uint64_t acknowledged() const { return acknowledged_; }
   std::uint64_t last_version() const { return last_version_; }
+  // The version the next delta is based on (0: the next update is a keyframe).
+  std::uint64_t next_base() const { return keyframe_requested_ ? 0 : base_version_; }
+  // Repair requests answered, and those ignored as answered already.
+  std::uint64_t repairs() const { return repairs_; }
+  std::uint64_t repeated_requests() const { return repeated_requests_; }
   // The map sent as `version`, if still in the history (nullptr otherwise).
   const CellSet* sent(std::uint64_t version) const;
 
@@ -57,9 +68,16 @@ class MapPublisher {
   MapPublisherSettings settings_;
   std::deque<std::pair<std::uint64_t, CellSet>> history_;
   std::uint64_t last_version_ = 0;
+  std::uint64_t base_version_ = 0;  // what the next delta is based on
   std::uint64_t acknowledged_ = 0;
   std::uint32_t cycles_since_ack_ = 0;
   bool keyframe_requested_ = true;  // the first update is a keyframe
+  // The last repair: the version it was based on and the update that carried it (0: none).
+  std::uint64_t repair_base_ = 0;
+  std::uint64_t repair_version_ = 0;
+  bool repair_pending_ = false;
+  std::uint64_t repairs_ = 0;
+  std::uint64_t repeated_requests_ = 0;
 };
 
 }  // namespace safecell
