@@ -3,12 +3,14 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
+#include <chrono>
 #include <filesystem>
-#include <memory>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "cell_fusion_bench.hpp"
 #include "command_line.hpp"
@@ -16,6 +18,7 @@
 #include "safecell/bench/map_sequence_writer.hpp"
 #include "safecell/bench/project_benchmarks.hpp"
 #include "safecell/cli/text_table.hpp"
+#include "safecell/closed_loop/controller_process.hpp"
 #include "safecell/errors/input_error.hpp"
 #include "scratch_path.hpp"
 
@@ -72,18 +75,19 @@ constexpr NamedMicroseconds kNamedMicroseconds[] = {
 // Runs the controller's benchmark program on the maps in `maps` (map_sequence_writer.hpp) with
 // `arguments` added, and returns the JSON figures it prints last. Throws when it gives none.
 nlohmann::ordered_json run_controller_bench(const std::filesystem::path& maps,
-                                            const std::string& arguments) {
-  const std::string command = std::string("'") + SAFECELL_CONTROLLER_BENCH +
-                              "' --json --benchmark_color=false --maps='" + maps.string() + "' " +
-                              arguments + " 2>&1";
-  std::string output;
-  {
-    const std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-    if (!pipe) throw std::runtime_error("cannot run " + std::string(SAFECELL_CONTROLLER_BENCH));
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe.get()) != nullptr) {
-      output += buffer.data();
-    }
+                                            std::vector<std::string> arguments) {
+  // A child process that ends with this one, however this one ends (ControllerProcess), its
+  // output into a file read once it has exited.
+  const ScratchPath output_file("controller-bench-output");
+  arguments.insert(arguments.begin(),
+                   {"--json", "--benchmark_color=false", "--maps=" + maps.string()});
+  ControllerProcess program(SAFECELL_CONTROLLER_BENCH, arguments, output_file.path());
+  while (program.running()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::ifstream in(output_file.path());
+  const std::string output{std::istreambuf_iterator<char>(in), {}};
+  if (program.exit_code().value_or(-1) != 0) {
+    throw std::runtime_error("safecell-controller-bench failed (exit " +
+                             std::to_string(program.exit_code().value_or(-1)) + "):\n" + output);
   }
   const std::size_t json_start = output.rfind("\n{");
   if (json_start == std::string::npos) {
@@ -102,7 +106,8 @@ nlohmann::ordered_json controller_figures(bool quick, std::ostream& progress) {
   write_default_cell_demo_maps(maps.path().string());
   progress << "running the controller's benchmarks (safecell-controller-bench)...\n" << std::flush;
   return run_controller_bench(
-      maps.path(), std::string("--benchmark_min_time=") + (quick ? "0.02 --quick" : "0.5"));
+      maps.path(), quick ? std::vector<std::string>{"--benchmark_min_time=0.02", "--quick"}
+                         : std::vector<std::string>{"--benchmark_min_time=0.5"});
 #else
   (void)quick;
   (void)progress;
@@ -121,7 +126,7 @@ CellFusionFigures cell_figures(const std::string& cell_path, const BenchOptions&
   progress << "the controller's map store holding the maps (safecell-controller-bench)...\n"
            << std::flush;
   const nlohmann::ordered_json store = run_controller_bench(
-      maps.path(), "--quick --benchmark_filter=map_store_memory --benchmark_min_time=0.02");
+      maps.path(), {"--quick", "--benchmark_filter=map_store_memory", "--benchmark_min_time=0.02"});
   const auto frames = static_cast<std::size_t>(options.frames);  // 10.. (checked before)
   figures.map_store_maps = static_cast<int>((frames + kMapSampleStride - 1) / kMapSampleStride);
   figures.map_store_bytes = store.at("map_store_bytes").get<double>();
