@@ -23,6 +23,9 @@ struct MadeUpTrial {
   std::uint64_t hold_after_ms = 250;    // from the cut's start
   std::uint64_t moving_again_ms = 300;  // from the cut's end
   FaultClass fault = FaultClass::kLinkCut;
+  // The host stalls the controller for this long from stall_from_ms: no cycle then.
+  std::uint64_t stall_from_ms = 0;
+  std::uint64_t stall_ms = 0;
 
   TrialRecord record() const {
     TrialRecord record;
@@ -34,6 +37,7 @@ struct MadeUpTrial {
     ControllerTrace trace;
     std::uint64_t version = 0;
     for (std::uint64_t t_ms = 100; t_ms * kMs < record.end_ns; t_ms += 4) {
+      if (t_ms >= stall_from_ms && t_ms < stall_from_ms + stall_ms) continue;
       const bool cut = t_ms >= cut_begin_ms && t_ms < cut_end_ms;
       // A map arrives every 33 ms while the link works.
       if (!cut && t_ms % 33 < 4) {
@@ -123,6 +127,43 @@ TEST(TrialChecks, NoRecoveryIsCaught) {
   const TrialResult result = check_trial(stuck.record(), TrialBounds{});
   EXPECT_FALSE(result.recovered_s.has_value());
   EXPECT_NE(failures_of(result).find("no motion again"), std::string::npos);
+}
+
+// A stop that came late because the host stalled the controller: the failure names the host's
+// lateness beside the bound and is worth one more run. The same late stop on a punctual host, and
+// a wrong map on a late host, are not: they stand.
+TEST(TrialChecks, ABoundBrokenOnALateHostSaysSoAndIsWorthARerun) {
+  MadeUpTrial stalled;
+  stalled.hold_after_ms = 400;
+  stalled.stall_from_ms = 2100;
+  stalled.stall_ms = 300;
+  TrialResult result = check_trial(stalled.record(), TrialBounds{});
+  EXPECT_FALSE(result.passed());
+  EXPECT_EQ(result.time_bound_failures, result.failures.size()) << failures_of(result);
+  EXPECT_GE(result.host.controller_late_ms, 290.0);
+  EXPECT_EQ(result.host.late_cycles, 1U);
+  EXPECT_TRUE(result.failed_on_a_late_host(TrialBounds{}));
+  EXPECT_NE(failures_of(result).find("[host: controller cycles up to 300.0 ms late, 1 beyond"),
+            std::string::npos)
+      << failures_of(result);
+
+  MadeUpTrial punctual;
+  punctual.hold_after_ms = 400;
+  result = check_trial(punctual.record(), TrialBounds{});
+  EXPECT_FALSE(result.passed());
+  EXPECT_EQ(result.host.late_cycles, 0U);
+  EXPECT_FALSE(result.failed_on_a_late_host(TrialBounds{})) << "a punctual host: it stands";
+
+  TrialRecord wrong_map = stalled.record();
+  wrong_map.traces[0].maps.back().hash ^= 1U;
+  result = check_trial(wrong_map, TrialBounds{});
+  EXPECT_GT(result.wrong_maps, 0U);
+  EXPECT_FALSE(result.failed_on_a_late_host(TrialBounds{})) << "a wrong map is never the host's";
+
+  // The service a frame behind counts as late too.
+  TrialRecord behind = punctual.record();
+  behind.service_behind_ms = 40.0;
+  EXPECT_TRUE(check_trial(behind, TrialBounds{}).failed_on_a_late_host(TrialBounds{}));
 }
 
 TEST(TrialChecks, ACauseOfAnotherClassDoesNotCount) {

@@ -50,6 +50,30 @@ void check_maps(const TrialRecord& record, TrialResult& result) {
   }
 }
 
+// The controller's cycles from the fault's start to the trial's end against its period.
+HostLateness measure_lateness(const TrialRecord& record, const TrialBounds& bounds) {
+  HostLateness host;
+  host.service_behind_ms = record.service_behind_ms;
+  for (const ControllerTrace& trace : record.traces) {
+    const TraceCycle* before = nullptr;
+    for (const TraceCycle& cycle : trace.cycles) {
+      if (cycle.t_ns >= record.fault_begin_ns && cycle.t_ns <= record.end_ns && before != nullptr) {
+        const double gap_ms = ms_between(before->t_ns, cycle.t_ns);
+        host.controller_late_ms = std::max(host.controller_late_ms, gap_ms - bounds.period_ms);
+        if (gap_ms > bounds.max_period_ms) ++host.late_cycles;
+      }
+      before = &cycle;
+    }
+  }
+  return host;
+}
+
+// A failure of a time bound, with the host's lateness beside the bound.
+void time_bound_failed(TrialResult& result, const TrialBounds& bounds, const std::string& text) {
+  result.failures.push_back(text + " [host: " + describe(result.host, bounds) + "]");
+  ++result.time_bound_failures;
+}
+
 // Every cycle that commanded motion against the age of the data it moved on.
 void check_motion_age(const TrialRecord& record, const TrialBounds& bounds, TrialResult& result) {
   for (const ControllerTrace& trace : record.traces) {
@@ -64,10 +88,11 @@ void check_motion_age(const TrialRecord& record, const TrialBounds& bounds, Tria
     }
   }
   if (result.stale_motion_cycles > 0) {
-    result.failures.push_back(std::to_string(result.stale_motion_cycles) +
-                              " cycle(s) commanded motion on data older than " +
-                              fixed1(bounds.moving_map_age_ms) + " ms (worst " +
-                              fixed1(result.worst_moving_map_age_ms) + " ms)");
+    time_bound_failed(result, bounds,
+                      std::to_string(result.stale_motion_cycles) +
+                          " cycle(s) commanded motion on data older than " +
+                          fixed1(bounds.moving_map_age_ms) + " ms (worst " +
+                          fixed1(result.worst_moving_map_age_ms) + " ms)");
   }
 }
 
@@ -168,15 +193,18 @@ void check_stop(const TrialRecord& record, const TrialBounds& bounds, TrialResul
     }
     const TraceCycle* held = first_hold(record, latching->t_ns);
     if (held == nullptr || ms_between(latching->t_ns, held->t_ns) > bounds.latched_stop_ms) {
-      result.failures.push_back("the robot was not held within " + fixed1(bounds.latched_stop_ms) +
-                                " ms of the latching error");
+      time_bound_failed(result, bounds,
+                        "the robot was not held within " + fixed1(bounds.latched_stop_ms) +
+                            " ms of the latching error");
     }
     return;
   }
   if (!result.stop_ms || *result.stop_ms > bounds.stop_ms) {
-    result.failures.push_back(
+    time_bound_failed(
+        result, bounds,
         "the robot was not held within " + fixed1(bounds.stop_ms) + " ms of the fault (" +
-        (result.stop_ms ? "held after " + fixed1(*result.stop_ms) + " ms" : "never held") + ")");
+            (result.stop_ms ? "held after " + fixed1(*result.stop_ms) + " ms" : "never held") +
+            ")");
   }
 }
 
@@ -189,12 +217,19 @@ void check_recovery(const TrialRecord& record, const TrialBounds& bounds, TrialR
     }
   }
   if (!result.recovered_s || *result.recovered_s > bounds.recover_s) {
-    result.failures.push_back("no motion again within " + fixed1(bounds.recover_s) +
-                              " s of the fault's end");
+    time_bound_failed(
+        result, bounds,
+        "no motion again within " + fixed1(bounds.recover_s) + " s of the fault's end");
   }
 }
 
 }  // namespace
+
+std::string describe(const HostLateness& host, const TrialBounds& bounds) {
+  return "controller cycles up to " + fixed1(host.controller_late_ms) + " ms late, " +
+         std::to_string(host.late_cycles) + " beyond its " + fixed1(bounds.max_period_ms) +
+         " ms window; the service up to " + fixed1(host.service_behind_ms) + " ms behind";
+}
 
 TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds) {
   TrialResult result;
@@ -204,6 +239,7 @@ TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds) {
     result.failures.emplace_back("no controller trace");
     return result;
   }
+  result.host = measure_lateness(record, bounds);
   check_maps(record, result);
   check_motion_age(record, bounds, result);
   collect_reactions(record, result);

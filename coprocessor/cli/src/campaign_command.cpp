@@ -74,6 +74,7 @@ void print_table(const CampaignResult& result, std::ostream& out) {
                    {"stale motion", Align::kRight},
                    {"oldest map moved on ms", Align::kRight},
                    {"moving again s", Align::kRight},
+                   {"host late ms", Align::kRight},
                    {"causes named", Align::kLeft},
                    {"result", Align::kLeft}});
   for (const TrialResult& trial : result.trials) {
@@ -85,12 +86,23 @@ void print_table(const CampaignResult& result, std::ostream& out) {
                    std::to_string(trial.maps_applied), std::to_string(trial.wrong_maps),
                    std::to_string(trial.stale_motion_cycles),
                    fixed(trial.worst_moving_map_age_ms, 0), optional_fixed(trial.recovered_s, 1),
-                   causes.empty() ? "-" : causes, trial.passed() ? "passed" : "FAILED"});
+                   fixed(trial.host.controller_late_ms, 0), causes.empty() ? "-" : causes,
+                   std::string(trial.passed() ? "passed" : "FAILED") +
+                       (trial.rerun_because ? " (2nd run)" : "")});
   }
   table.print(out);
   std::uint64_t refused_without_fault = 0;
   for (const TrialResult& trial : result.trials)
     refused_without_fault += trial.refused_without_fault;
+  for (const TrialResult& trial : result.trials) {
+    if (!trial.rerun_because) continue;
+    out << to_string(trial.fault) << ": run twice, " << *trial.rerun_because << "; the first run: ";
+    for (const std::string& failure : trial.first_run_failures) out << failure << "; ";
+    out << "\n";
+  }
+  out << "host late ms: the controller's latest cycle beyond its period, from the fault's start "
+         "(bounds that break while a cycle is later than its watchdog's window, or the service a "
+         "frame behind, get one more run)\n";
   out << "map updates refused while the link had no fault: " << refused_without_fault
       << " (must be 0)\n";
   out << "bounds: held within " << fixed(result.bounds.stop_ms, 0)

@@ -38,6 +38,12 @@ struct TrialBounds {
   double latched_stop_ms = 14.0;   // a late cycle and a little: from the latching error
   double moving_map_age_ms = 517;  // max data age + T_wd + a late cycle + clock lead
   double recover_s = 4.0;          // after the fault's end
+  // What the host must keep to for the bounds above to mean anything: the controller's cycle
+  // (its period, and the window its watchdog allows) and the service's frame period. A cycle
+  // later than the window, or the service a frame or more behind, means the host was late.
+  double period_ms = 4.0;
+  double max_period_ms = 12.0;
+  double frame_period_ms = 33.3;
 };
 
 struct TrialRecord {
@@ -49,6 +55,19 @@ struct TrialRecord {
   SentMaps sent;
   std::uint64_t injected = 0;          // faults the proxy or the cameras injected
   std::optional<std::string> refusal;  // why the controller refused the session, if it did
+  // How far the service fell behind its frame schedule, at worst, from the fault's start.
+  double service_behind_ms = 0.0;
+};
+
+// How late the host was while a trial was watched (from the fault's start to the trial's end).
+struct HostLateness {
+  double controller_late_ms = 0.0;  // the worst cycle: its gap to the one before - the period
+  std::uint64_t late_cycles = 0;    // cycles later than the watchdog's window
+  double service_behind_ms = 0.0;   // TrialRecord::service_behind_ms
+  // Late enough that a broken time bound says more about the host than about safecell.
+  [[nodiscard]] bool late(const TrialBounds& bounds) const {
+    return late_cycles > 0 || service_behind_ms >= bounds.frame_period_ms;
+  }
 };
 
 struct TrialResult {
@@ -69,8 +88,23 @@ struct TrialResult {
   std::optional<double> recovered_s;  // motion again, from the fault's end
   std::vector<std::string> causes;    // what the controller named, from the fault's start
   std::vector<std::string> failures;  // each check that failed, in words
+  // Of those, the failures of a time bound (a stop, a recovery, the age of data moved on): the
+  // only ones a late host can explain. Every other failure stands whatever the host did.
+  std::size_t time_bound_failures = 0;
+  HostLateness host;
+  // When this is a second run: why, and what the first run found.
+  std::optional<std::string> rerun_because;
+  std::vector<std::string> first_run_failures;
+  HostLateness first_run_host;
   [[nodiscard]] bool passed() const { return failures.empty(); }
+  // A failure of time bounds only, while the host was late: worth one more run.
+  [[nodiscard]] bool failed_on_a_late_host(const TrialBounds& bounds) const {
+    return !passed() && time_bound_failures == failures.size() && host.late(bounds);
+  }
 };
+
+// One line on the host's lateness, for the table and the failure messages.
+std::string describe(const HostLateness& host, const TrialBounds& bounds);
 
 TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds);
 
