@@ -45,6 +45,7 @@ TEST(FuzzCorpus, CellFile) { replay("cell_file", &fuzz::cell_file); }
 TEST(FuzzCorpus, Urdf) { replay("urdf", &fuzz::urdf); }
 TEST(FuzzCorpus, Calibration) { replay("calibration", &fuzz::calibration); }
 TEST(FuzzCorpus, ControllerConfig) { replay("controller_config", &fuzz::controller_config); }
+TEST(FuzzCorpus, LutFile) { replay("lut_file", &fuzz::lut_file); }
 #endif
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // The libFuzzer targets of the link's hostile-input paths and of the file loaders (the files an
-// integrator writes: cell, URDF, calibration, controller). Each is a plain function here so that
+// integrator writes: cell, URDF, calibration, controller; and the LUT files). Each is a plain function here so that
 // test_fuzz_corpus replays the kept corpora with the normal tests; the fuzz preset builds each
 // into a libFuzzer program (SAFECELL_FUZZ_ENTRY selects the one). A target returns 0 and aborts
 // (SAFECELL_ASSERT, or a sanitizer) when an invariant breaks.
@@ -23,6 +23,8 @@ int cell_file(const std::uint8_t* data, std::size_t size);
 int urdf(const std::uint8_t* data, std::size_t size);
 int calibration(const std::uint8_t* data, std::size_t size);
 int controller_config(const std::uint8_t* data, std::size_t size);
+// A LUT file (`luts info`'s summary and the service's load); mode byte 1 seals it (see the file).
+int lut_file(const std::uint8_t* data, std::size_t size);
 
 }  // namespace safecell::fuzz
 
