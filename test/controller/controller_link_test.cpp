@@ -496,6 +496,41 @@ TEST_F(ControllerLinkTest, NoChallengeNoSession) {
   EXPECT_EQ(last_sent().body.handshake.challenge, 0u);
 }
 
+// The heartbeat after each update names it: an update lost whole gets a repair asked for at once
+// (from the version held), once; a heartbeat naming the held version asks nothing.
+TEST_F(ControllerLinkTest, AnUpdateLostWholeIsRepairedOnItsHeartbeat) {
+  const auto heartbeat_naming = [this](std::uint64_t version, std::uint64_t now) {
+    safecell_v1_Message message = safecell_v1_Message_init_zero;
+    message.which_body = safecell_v1_Message_heartbeat_tag;
+    message.body.heartbeat.last_map_version = version;
+    Bytes payload(kMaxPayloadBytes);
+    const Result<std::size_t> encoded = encode_message(message, payload.data(), payload.size());
+    payload.resize(encoded.ok() ? encoded.value() : 0);
+    return coprocessor_.seal_payload(payload, 0, now);
+  };
+  open(coprocessor_, 10 * kMs);
+  const auto first = map_with(100, 900);
+  deliver(coprocessor_.update(nullptr, 0, first, 1, 19 * kMs, 20 * kMs), 21 * kMs);
+  const std::size_t sent = port_.sent.size();
+  deliver(heartbeat_naming(1, 21 * kMs), 21 * kMs);
+  EXPECT_EQ(port_.sent.size(), sent) << "the update named is held: nothing to ask";
+  // Version 2 is lost on the way; its heartbeat comes.
+  (void)coprocessor_.update(&first, 1, map_with(200, 950), 2, 29 * kMs, 30 * kMs);
+  deliver(heartbeat_naming(2, 30 * kMs), 31 * kMs);
+  ASSERT_EQ(last_sent().which_body, safecell_v1_Message_keyframe_request_tag);
+  EXPECT_EQ(last_sent().body.keyframe_request.held_map_version, 1u);
+  EXPECT_EQ(link_.losses_repaired(), 1u);
+  const std::size_t asked = port_.sent.size();
+  deliver(heartbeat_naming(2, 32 * kMs), 32 * kMs);
+  EXPECT_EQ(port_.sent.size(), asked) << "asked once per lost update";
+  // The repair, a delta from the version held, is taken; nothing was refused.
+  const auto third = map_with(300, 990);
+  deliver(coprocessor_.update(&first, 1, third, 3, 39 * kMs, 40 * kMs), 41 * kMs);
+  EXPECT_EQ(store_.store().version(), 3u);
+  EXPECT_EQ(held(), third);
+  EXPECT_EQ(link_.updates_refused(), 0u);
+}
+
 TEST_F(ControllerLinkTest, OversizeDatagramsAndGarbageAreCorruption) {
   deliver(Bytes(kMaxFrameBytes + 200, 0xAB), 1 * kMs);
   EXPECT_EQ(link_.last_fault().error, LinkError::kCorruption);

@@ -149,6 +149,13 @@ std::vector<Golden> golden_messages(std::uint32_t version) {
     all.push_back({"handshake_accepted", handshake_message(version, true, kGoldenChallenge)});
   }
   for (Golden& golden : session_messages()) all.push_back(std::move(golden));
+  if (version >= 2) {
+    // Added with Heartbeat.last_map_version (field 2): the heartbeat after map update 12.
+    pb::Message m;
+    m.mutable_heartbeat()->set_counter(78);
+    m.mutable_heartbeat()->set_last_map_version(12);
+    all.push_back({"heartbeat_after_map", m});
+  }
   return all;
 }
 

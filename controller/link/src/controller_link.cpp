@@ -215,6 +215,8 @@ void ControllerLink::open_session(std::uint64_t now_ns) noexcept {
   sealer_ = FrameSealer(endpoints);
   store_.reset();
   map_applied_ns_ = 0;
+  update_version_ = 0;
+  repair_through_ = 0;
   answer_handshake(opening, true, challenge, now_ns);
 }
 
@@ -288,7 +290,17 @@ void ControllerLink::handle_message(const FrameView& frame, std::uint64_t now_ns
         healthy_cameras_ = incoming_.body.status_report.healthy_cameras;
       }
       break;
-    default:  // heartbeats, and messages meant for the coprocessor: nothing to do
+    case safecell_v1_Message_heartbeat_tag: {
+      // The update it names is not held and no repair was asked for it: it was lost (whole, or
+      // its end). Asked now, the next update repairs instead of being refused.
+      const std::uint64_t sent = incoming_.body.heartbeat.last_map_version;
+      if (sent > store_.version() && sent > repair_through_) {
+        ++losses_repaired_;
+        request_repair(sent, now_ns);
+      }
+      break;
+    }
+    default:  // messages meant for the coprocessor: nothing to do
       break;
   }
 }
@@ -299,6 +311,7 @@ void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const F
   // until the store has the chunk's outcome.
   update_healthy_cameras_ = chunk.healthy_cameras;
   update_speed_reduction_permille_ = chunk.speed_reduction_permille;
+  update_version_ = chunk.map_version;
   MapOffer offer = store_.accept(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size,
                                  frame.header.capture_time_ns);
   if (offer.outcome == MapOutcome::kWorking) offer = store_.work(budget_);
@@ -320,12 +333,15 @@ void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) no
   // The coprocessor bases each delta on the update it sent last (MapPublisher): any update that
   // is not taken whole, and any base this end does not hold, asks it for a repair from the
   // version held here. (A version not above the held one is a repetition: nothing to repair.)
-  if (offer.refusal != MapRefusal::kStaleVersion) {
-    reply_ = safecell_v1_Message_init_zero;
-    reply_.which_body = safecell_v1_Message_keyframe_request_tag;
-    reply_.body.keyframe_request.held_map_version = store_.version();
-    send(sealer_, now_ns, now_ns);
-  }
+  if (offer.refusal != MapRefusal::kStaleVersion) request_repair(update_version_, now_ns);
+}
+
+void ControllerLink::request_repair(std::uint64_t through, std::uint64_t now_ns) noexcept {
+  if (through > repair_through_) repair_through_ = through;
+  reply_ = safecell_v1_Message_init_zero;
+  reply_.which_body = safecell_v1_Message_keyframe_request_tag;
+  reply_.body.keyframe_request.held_map_version = store_.version();
+  send(sealer_, now_ns, now_ns);
 }
 
 void ControllerLink::send_joint_state(const JointSample& joints, const MotionReport& motion,

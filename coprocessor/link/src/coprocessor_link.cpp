@@ -174,6 +174,11 @@ MapUpdate CoprocessorLink::send_map(const CellSet& map, std::uint64_t capture_ns
     *message.mutable_map_chunk() = chunk;
     send_message(message, capture_controller_ns);
   }
+  // The update's end, named: a controller that does not hold it asks for a repair at once.
+  v1::Message end;
+  end.mutable_heartbeat()->set_counter(++heartbeats_);
+  end.mutable_heartbeat()->set_last_map_version(update.version);
+  send_message(end, 0);
   return update;
 }
 

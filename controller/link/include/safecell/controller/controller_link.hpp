@@ -135,6 +135,8 @@ class ControllerLink {
   std::uint64_t updates_refused() const noexcept { return updates_refused_; }
   // Whole updates whose map differed from the sender's: the controller stops on each (SAFETY.md).
   std::uint64_t hash_mismatches() const noexcept { return hash_mismatches_; }
+  // Updates found lost by the heartbeat that follows each (a repair asked for at once).
+  std::uint64_t losses_repaired() const noexcept { return losses_repaired_; }
   // The coprocessor asked the robot stopped (a clean shutdown, its operator), until acknowledged.
   bool stop_requested() const noexcept { return stop_requested_; }
   safecell_v1_FaultCause stop_cause() const noexcept { return stop_cause_; }
@@ -155,6 +157,9 @@ class ControllerLink {
   void handle_map_chunk(const safecell_v1_MapChunk& chunk, const FrameView& frame,
                         std::uint64_t now_ns) noexcept;
   void map_outcome(const MapOffer& offer, std::uint64_t now_ns) noexcept;
+  // Asks the coprocessor for a repair from the held version (KeyframeRequest), counting every
+  // update up to `through` as asked for.
+  void request_repair(std::uint64_t through, std::uint64_t now_ns) noexcept;
   void detected(const LinkFault& fault, std::uint64_t now_ns) noexcept;
   // Encodes reply_ and sends it sealed by `sealer`.
   void send(FrameSealer& sealer, std::uint64_t capture_ns, std::uint64_t now_ns,
@@ -192,6 +197,9 @@ class ControllerLink {
   std::uint64_t updates_applied_ = 0;
   std::uint64_t updates_refused_ = 0;
   std::uint64_t hash_mismatches_ = 0;
+  std::uint64_t update_version_ = 0;   // of the chunk in work in the store
+  std::uint64_t repair_through_ = 0;   // updates up to this version have a repair asked for
+  std::uint64_t losses_repaired_ = 0;  // repairs asked for on a heartbeat
 
   // Scratch (static size: no heap, no large stack frames in the cycle).
   std::uint8_t datagram_[kMaxFrameBytes + 1]{};

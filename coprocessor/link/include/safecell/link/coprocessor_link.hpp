@@ -68,7 +68,8 @@ class CoprocessorLink {
   void start_new_session();
 
   // Sends this cycle's map, its data captured at `capture_ns` (coprocessor clock), with the
-  // protective separation's speed reduction (MapPublisher::publish).
+  // protective separation's speed reduction (MapPublisher::publish), then a heartbeat naming its
+  // version (session.proto).
   MapUpdate send_map(const CellSet& map, std::uint64_t capture_ns, std::uint32_t healthy_cameras,
                      std::uint32_t camera_count, std::uint32_t speed_reduction_permille = 0);
   // Sends one clock echo request (call now and then: drift).
@@ -132,6 +133,7 @@ class CoprocessorLink {
   std::optional<std::string> refused_because_;
   std::uint32_t next_echo_id_ = 1;
   std::uint64_t repair_requests_ = 0;
+  std::uint64_t heartbeats_ = 0;
   std::optional<ReceivedJointState> last_joint_state_;
   std::vector<JointStateHandler> on_joint_state_;
   std::vector<v1::FaultReport> controller_faults_;

@@ -6,9 +6,9 @@
 // controller applies them in order, so on a link without faults each delta finds its base held,
 // however many updates are on their way (an update built against the last *acknowledged* version
 // was refused whenever the one before it was still in flight: about a quarter of them). When the
-// controller refuses or loses an update it asks for a repair naming the version it holds
-// (KeyframeRequest): the next update is a delta from that version while it is in the history, else
-// a keyframe. A request naming a version that a repair sent within the last two updates was based
+// controller refuses an update, or finds one lost (from the heartbeat CoprocessorLink sends after
+// each, naming it), it asks for a repair naming the version it holds (KeyframeRequest): the next
+// update is a delta from that version while it is in the history, else a keyframe. A request naming a version that a repair sent within the last two updates was based
 // on already is one the repair answers (a second refusal of the same loss) and changes nothing.
 // A keyframe goes out at the start, on a request naming a version no longer in the history (or
 // none), and when no acknowledgement has arrived for keyframe_after_cycles cycles.
