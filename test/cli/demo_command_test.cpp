@@ -181,6 +181,23 @@ TEST(DemoCommand, TheClosedLoopRunsAndWritesTheReport) {
   EXPECT_GT(ran_again, 0U) << "no recorded cycle went through the pipeline again";
 }
 
+// Evidence that could not be written fails the run (exit 3) and the summary says how much: here
+// the incidents' folder is a file, as a full disk would refuse them.
+TEST(DemoCommand, IncidentsThatCannotBeWrittenEndInExitThree) {
+  const test::ScratchFolder scratch("safecell-demo-no-evidence");
+  const fs::path cell = test::write_coarse_cell(scratch.path());
+  const fs::path out = scratch.path() / "report";
+  fs::create_directories(out);
+  std::ofstream(out / "incidents") << "not a folder";
+  const auto run =
+      test::safecell_cli({"demo", "--cell", cell.string(), "--seconds", "5", "--fps", "10", "--out",
+                          out.string(), "--lut-cache", (scratch.path() / "cache").string()});
+  EXPECT_EQ(run.exit_code, 3) << run.err;
+  EXPECT_NE(run.err.find("not written"), std::string::npos) << run.err;
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_GE(summary["incidents_not_written"].get<int>(), 1) << summary.dump(2);
+}
+
 TEST(DemoCommand, AbsurdSettingsAreRefused) {
   EXPECT_EQ(test::safecell_cli({"demo", "--seconds", "-1"}).exit_code, 2);
   EXPECT_EQ(test::safecell_cli({"demo", "--fps", "0"}).exit_code, 2);
