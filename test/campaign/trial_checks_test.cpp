@@ -139,7 +139,7 @@ TEST(TrialChecks, ABoundBrokenOnALateHostSaysSoAndIsWorthARerun) {
   stalled.stall_ms = 300;
   TrialResult result = check_trial(stalled.record(), TrialBounds{});
   EXPECT_FALSE(result.passed());
-  EXPECT_EQ(result.time_bound_failures, result.failures.size()) << failures_of(result);
+  EXPECT_EQ(result.timing_failures, result.failures.size()) << failures_of(result);
   EXPECT_GE(result.host.controller_late_ms, 290.0);
   EXPECT_EQ(result.host.late_cycles, 1U);
   EXPECT_TRUE(result.failed_on_a_late_host(TrialBounds{}));
@@ -164,6 +164,28 @@ TEST(TrialChecks, ABoundBrokenOnALateHostSaysSoAndIsWorthARerun) {
   TrialRecord behind = punctual.record();
   behind.service_behind_ms = 40.0;
   EXPECT_TRUE(check_trial(behind, TrialBounds{}).failed_on_a_late_host(TrialBounds{}));
+}
+
+// An update refused while the link had no fault fails the trial; on a late host (its frames too
+// old to be taken) it is worth one more run, on a punctual one it stands.
+TEST(TrialChecks, AnUpdateRefusedOnACleanLinkFailsUnlessTheHostWasLate) {
+  MadeUpTrial clean;
+  TrialRecord record = clean.record();
+  record.traces[0].map_refusals.push_back(
+      {1000 * kMs, "delta base is not the held map", 1});  // before the fault
+  TrialResult result = check_trial(record, TrialBounds{});
+  EXPECT_EQ(result.refused_without_fault, 1U);
+  EXPECT_NE(failures_of(result).find("refused while the link had no fault"), std::string::npos)
+      << failures_of(result);
+  EXPECT_FALSE(result.failed_on_a_late_host(TrialBounds{}));
+  record.service_behind_ms = 40.0;
+  EXPECT_TRUE(check_trial(record, TrialBounds{}).failed_on_a_late_host(TrialBounds{}));
+  // The control: after the fault's start, on the link cut, a refusal is the fault's.
+  record = clean.record();
+  record.traces[0].map_refusals.push_back({3600 * kMs, "delta base is not the held map", 1});
+  result = check_trial(record, TrialBounds{});
+  EXPECT_EQ(result.refused_without_fault, 0U);
+  EXPECT_TRUE(result.passed()) << failures_of(result);
 }
 
 TEST(TrialChecks, ACauseOfAnotherClassDoesNotCount) {

@@ -1,9 +1,9 @@
 #pragma once
 // The libFuzzer targets of the link's hostile-input paths and of the file loaders (the files an
-// integrator writes: cell, URDF, calibration, controller; and the LUT files). Each is a plain function here so that
-// test_fuzz_corpus replays the kept corpora with the normal tests; the fuzz preset builds each
-// into a libFuzzer program (SAFECELL_FUZZ_ENTRY selects the one). A target returns 0 and aborts
-// (SAFECELL_ASSERT, or a sanitizer) when an invariant breaks.
+// integrator writes: cell, URDF, calibration, controller; and the LUT files). Each is a plain
+// function here so that test_fuzz_corpus replays the kept corpora with the normal tests; the fuzz
+// preset builds each into a libFuzzer program (SAFECELL_FUZZ_ENTRY selects the one). A target
+// returns 0 and aborts (SAFECELL_ASSERT, or a sanitizer) when an invariant breaks.
 
 #include <cstddef>
 #include <cstdint>

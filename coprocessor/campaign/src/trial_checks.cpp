@@ -68,10 +68,10 @@ HostLateness measure_lateness(const TrialRecord& record, const TrialBounds& boun
   return host;
 }
 
-// A failure of a time bound, with the host's lateness beside the bound.
-void time_bound_failed(TrialResult& result, const TrialBounds& bounds, const std::string& text) {
+// A failure a late host can explain, with the host's lateness beside the bound.
+void timing_failed(TrialResult& result, const TrialBounds& bounds, const std::string& text) {
   result.failures.push_back(text + " [host: " + describe(result.host, bounds) + "]");
-  ++result.time_bound_failures;
+  ++result.timing_failures;
 }
 
 // Every cycle that commanded motion against the age of the data it moved on.
@@ -88,11 +88,11 @@ void check_motion_age(const TrialRecord& record, const TrialBounds& bounds, Tria
     }
   }
   if (result.stale_motion_cycles > 0) {
-    time_bound_failed(result, bounds,
-                      std::to_string(result.stale_motion_cycles) +
-                          " cycle(s) commanded motion on data older than " +
-                          fixed1(bounds.moving_map_age_ms) + " ms (worst " +
-                          fixed1(result.worst_moving_map_age_ms) + " ms)");
+    timing_failed(result, bounds,
+                  std::to_string(result.stale_motion_cycles) +
+                      " cycle(s) commanded motion on data older than " +
+                      fixed1(bounds.moving_map_age_ms) + " ms (worst " +
+                      fixed1(result.worst_moving_map_age_ms) + " ms)");
   }
 }
 
@@ -193,14 +193,14 @@ void check_stop(const TrialRecord& record, const TrialBounds& bounds, TrialResul
     }
     const TraceCycle* held = first_hold(record, latching->t_ns);
     if (held == nullptr || ms_between(latching->t_ns, held->t_ns) > bounds.latched_stop_ms) {
-      time_bound_failed(result, bounds,
-                        "the robot was not held within " + fixed1(bounds.latched_stop_ms) +
-                            " ms of the latching error");
+      timing_failed(result, bounds,
+                    "the robot was not held within " + fixed1(bounds.latched_stop_ms) +
+                        " ms of the latching error");
     }
     return;
   }
   if (!result.stop_ms || *result.stop_ms > bounds.stop_ms) {
-    time_bound_failed(
+    timing_failed(
         result, bounds,
         "the robot was not held within " + fixed1(bounds.stop_ms) + " ms of the fault (" +
             (result.stop_ms ? "held after " + fixed1(*result.stop_ms) + " ms" : "never held") +
@@ -217,9 +217,8 @@ void check_recovery(const TrialRecord& record, const TrialBounds& bounds, TrialR
     }
   }
   if (!result.recovered_s || *result.recovered_s > bounds.recover_s) {
-    time_bound_failed(
-        result, bounds,
-        "no motion again within " + fixed1(bounds.recover_s) + " s of the fault's end");
+    timing_failed(result, bounds,
+                  "no motion again within " + fixed1(bounds.recover_s) + " s of the fault's end");
   }
 }
 
@@ -244,8 +243,9 @@ TrialResult check_trial(const TrialRecord& record, const TrialBounds& bounds) {
   check_motion_age(record, bounds, result);
   collect_reactions(record, result);
   if (result.refused_without_fault > 0) {
-    result.failures.push_back(std::to_string(result.refused_without_fault) +
-                              " map update(s) refused while the link had no fault");
+    timing_failed(result, bounds,
+                  std::to_string(result.refused_without_fault) +
+                      " map update(s) refused while the link had no fault");
   }
 
   const std::vector<std::string>& expected = expected_causes(record.fault);

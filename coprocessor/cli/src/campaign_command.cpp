@@ -101,8 +101,8 @@ void print_table(const CampaignResult& result, std::ostream& out) {
     out << "\n";
   }
   out << "host late ms: the controller's latest cycle beyond its period, from the fault's start "
-         "(bounds that break while a cycle is later than its watchdog's window, or the service a "
-         "frame behind, get one more run)\n";
+         "(time bounds that break, or updates refused on a clean link, while a cycle is later than "
+         "its watchdog's window or the service a frame behind, get one more run)\n";
   out << "map updates refused while the link had no fault: " << refused_without_fault
       << " (must be 0)\n";
   out << "bounds: held within " << fixed(result.bounds.stop_ms, 0)

@@ -88,18 +88,19 @@ struct TrialResult {
   std::optional<double> recovered_s;  // motion again, from the fault's end
   std::vector<std::string> causes;    // what the controller named, from the fault's start
   std::vector<std::string> failures;  // each check that failed, in words
-  // Of those, the failures of a time bound (a stop, a recovery, the age of data moved on): the
-  // only ones a late host can explain. Every other failure stands whatever the host did.
-  std::size_t time_bound_failures = 0;
+  // Of those, the ones a late host can explain: a time bound (a stop, a recovery, the age of data
+  // moved on), and updates refused on a clean link (their frames came too late to be taken).
+  // Every other failure stands whatever the host did.
+  std::size_t timing_failures = 0;
   HostLateness host;
   // When this is a second run: why, and what the first run found.
   std::optional<std::string> rerun_because;
   std::vector<std::string> first_run_failures;
   HostLateness first_run_host;
   [[nodiscard]] bool passed() const { return failures.empty(); }
-  // A failure of time bounds only, while the host was late: worth one more run.
+  // Timing failures only, while the host was late: worth one more run.
   [[nodiscard]] bool failed_on_a_late_host(const TrialBounds& bounds) const {
-    return !passed() && time_bound_failures == failures.size() && host.late(bounds);
+    return !passed() && timing_failures == failures.size() && host.late(bounds);
   }
 };
 

@@ -8,10 +8,11 @@
 // was refused whenever the one before it was still in flight: about a quarter of them). When the
 // controller refuses an update, or finds one lost (from the heartbeat CoprocessorLink sends after
 // each, naming it), it asks for a repair naming the version it holds (KeyframeRequest): the next
-// update is a delta from that version while it is in the history, else a keyframe. A request naming a version that a repair sent within the last two updates was based
-// on already is one the repair answers (a second refusal of the same loss) and changes nothing.
-// A keyframe goes out at the start, on a request naming a version no longer in the history (or
-// none), and when no acknowledgement has arrived for keyframe_after_cycles cycles.
+// update is a delta from that version while it is in the history, else a keyframe. A request naming
+// a version that a repair sent within the last two updates was based on already is one the repair
+// answers (a second refusal of the same loss) and changes nothing. A keyframe goes out at the
+// start, on a request naming a version no longer in the history (or none), and when no
+// acknowledgement has arrived for keyframe_after_cycles cycles.
 // Thread context: the coprocessor's link thread; not synchronised.
 
 #include <cstddef>
