@@ -23,22 +23,17 @@
 namespace safecell::fuzz {
 namespace {
 
-// The header's fields the sealing mode fills (lut_file.cpp's Header).
-constexpr std::size_t kHeaderBytes = 80;
-constexpr std::size_t kFileBytesOffset = 64;
-constexpr std::size_t kChecksumOffset = 72;
-
 std::vector<std::uint8_t> sealed(const std::uint8_t* data, std::size_t size) {
   std::vector<std::uint8_t> file(data, data + size);
-  if (file.size() < kHeaderBytes) return file;
+  if (file.size() < kLutHeaderBytes) return file;
   const std::uint64_t bytes = file.size();
   for (std::size_t k = 0; k < 8; ++k) {
-    file[kFileBytesOffset + k] = static_cast<std::uint8_t>(bytes >> (8 * k));
+    file[kLutFileBytesOffset + k] = static_cast<std::uint8_t>(bytes >> (8 * k));
   }
-  std::fill_n(file.begin() + kChecksumOffset, 4, std::uint8_t{0});
+  std::fill_n(file.begin() + kLutChecksumOffset, 4, std::uint8_t{0});
   const std::uint32_t checksum = crc32(file.data(), file.size());
   for (std::size_t k = 0; k < 4; ++k) {
-    file[kChecksumOffset + k] = static_cast<std::uint8_t>(checksum >> (8 * k));
+    file[kLutChecksumOffset + k] = static_cast<std::uint8_t>(checksum >> (8 * k));
   }
   return file;
 }

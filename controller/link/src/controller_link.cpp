@@ -166,8 +166,7 @@ void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_
     answer_handshake(opening, false, challenge_, now_ns);
     return;
   }
-  if (challenge_ == 0 || opening != opening_ || offered.challenge != challenge_ ||
-      now_ns - challenge_ns_ > config_.challenge_lifetime_ns) {
+  if (!challenge_pending(opening, now_ns) || offered.challenge != challenge_) {
     // Not the answer to the challenge this controller gave out last (a recording of an earlier
     // opening, a duplicate, or too late): refused without an answer, the session in place kept.
     ++stale_answers_;
@@ -177,9 +176,13 @@ void ControllerLink::handle_handshake(const FrameView& frame, std::uint64_t now_
   open_session(now_ns);
 }
 
+bool ControllerLink::challenge_pending(std::uint64_t opening, std::uint64_t now_ns) const noexcept {
+  return challenge_ != 0 && opening == opening_ &&
+         now_ns - challenge_ns_ <= config_.challenge_lifetime_ns;
+}
+
 bool ControllerLink::challenge_for(std::uint64_t opening, std::uint64_t now_ns) noexcept {
-  if (challenge_ != 0 && opening == opening_ &&
-      now_ns - challenge_ns_ <= config_.challenge_lifetime_ns) {
+  if (challenge_pending(opening, now_ns)) {
     return true;  // the same opening again (its frame resent): the same challenge
   }
   challenge_ = 0;
@@ -310,6 +313,7 @@ void ControllerLink::handle_map_chunk(const safecell_v1_MapChunk& chunk, const F
   // The chunk's runs stay in incoming_ while the store works on them: poll() reads no frame
   // until the store has the chunk's outcome.
   update_healthy_cameras_ = chunk.healthy_cameras;
+  update_camera_count_ = chunk.camera_count;
   update_speed_reduction_permille_ = chunk.speed_reduction_permille;
   update_version_ = chunk.map_version;
   MapOffer offer = store_.accept(chunk_header_of(chunk), chunk.runs.bytes, chunk.runs.size,
@@ -322,6 +326,7 @@ void ControllerLink::map_outcome(const MapOffer& offer, std::uint64_t now_ns) no
   if (offer.outcome == MapOutcome::kApplied) {
     map_applied_ns_ = now_ns;
     healthy_cameras_ = update_healthy_cameras_;
+    camera_count_ = update_camera_count_;
     speed_reduction_permille_ = update_speed_reduction_permille_;
     ++updates_applied_;
     return;

@@ -70,7 +70,9 @@ struct Header {
   std::uint32_t checksum;
   std::uint32_t reserved;
 };
-static_assert(sizeof(Header) == 80);
+static_assert(sizeof(Header) == kLutHeaderBytes);
+static_assert(offsetof(Header, file_bytes) == kLutFileBytesOffset);
+static_assert(offsetof(Header, checksum) == kLutChecksumOffset);
 
 struct SectionEntry {
   std::uint32_t kind;
@@ -81,8 +83,6 @@ struct SectionEntry {
   std::uint64_t bytes;
 };
 static_assert(sizeof(SectionEntry) == 24);
-
-constexpr std::size_t kChecksumOffset = offsetof(Header, checksum);
 
 // Builds the file image in memory: sections appended 8-byte aligned, then the table.
 class FileImage {
@@ -113,7 +113,7 @@ class FileImage {
     header.checksum = 0;
     std::memcpy(bytes_.data(), &header, sizeof(Header));
     const std::uint32_t checksum = crc32(bytes_.data(), bytes_.size());
-    std::memcpy(bytes_.data() + kChecksumOffset, &checksum, sizeof(checksum));
+    std::memcpy(bytes_.data() + kLutChecksumOffset, &checksum, sizeof(checksum));
     return std::string(bytes_.begin(), bytes_.end());
   }
 
@@ -171,11 +171,11 @@ Header checked_header(const std::filesystem::path& path, const Mapping& mapping)
                                  std::to_string(mapping.size()));
   }
   Crc32 crc;
-  crc.update(mapping.data(), kChecksumOffset);
+  crc.update(mapping.data(), kLutChecksumOffset);
   const std::uint32_t zero = 0;
   crc.update(&zero, sizeof(zero));
-  crc.update(mapping.data() + kChecksumOffset + sizeof(zero),
-             mapping.size() - kChecksumOffset - sizeof(zero));
+  crc.update(mapping.data() + kLutChecksumOffset + sizeof(zero),
+             mapping.size() - kLutChecksumOffset - sizeof(zero));
   if (crc.value() != header.checksum) {
     throw LutFileError(path, "checksum mismatch: the file is damaged");
   }

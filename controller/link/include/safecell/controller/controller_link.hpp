@@ -120,7 +120,9 @@ class ControllerLink {
   std::uint64_t stale_answers() const noexcept { return stale_answers_; }
   // The capture time of the held map's data (controller clock); 0 without a map.
   std::uint64_t map_capture_ns() const noexcept { return store_.capture_ns(); }
+  // The held map's cameras: healthy ones (a status report may lower it) and the cell's count.
   std::uint32_t healthy_cameras() const noexcept { return healthy_cameras_; }
+  std::uint32_t camera_count() const noexcept { return camera_count_; }
   // The speed scale the held map allows (MapChunk.speed_reduction_permille, bound into its hash):
   // 1 without a reduction, 0 for 1000 permille or more (a stop). The cycle commands no more.
   double separation_speed_limit() const noexcept {
@@ -147,6 +149,9 @@ class ControllerLink {
   // The challenge for an opening: the one given out to this opening while it is valid, else a
   // fresh one. False when the entropy source failed.
   bool challenge_for(std::uint64_t opening, std::uint64_t now_ns) noexcept;
+  // True while the challenge given out last is unused, was given to `opening` and is not older
+  // than its lifetime.
+  bool challenge_pending(std::uint64_t opening, std::uint64_t now_ns) const noexcept;
   // Takes the session of the opening whose challenge was answered.
   void open_session(std::uint64_t now_ns) noexcept;
   // Sends the handshake answer to `opening`: this end's configuration, accepted or not, and the
@@ -189,7 +194,9 @@ class ControllerLink {
 
   std::uint64_t map_applied_ns_ = 0;
   std::uint32_t healthy_cameras_ = 0;
-  std::uint32_t update_healthy_cameras_ = 0;           // of the chunk in work in the store
+  std::uint32_t camera_count_ = 0;
+  std::uint32_t update_healthy_cameras_ = 0;
+  std::uint32_t update_camera_count_ = 0;              // of the chunk in work in the store
   std::uint32_t speed_reduction_permille_ = 0;         // of the held map
   std::uint32_t update_speed_reduction_permille_ = 0;  // of the chunk in work in the store
   std::uint32_t budget_ = 0;                           // this poll's work units left

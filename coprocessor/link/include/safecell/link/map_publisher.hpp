@@ -56,8 +56,6 @@ class MapPublisher {
 
   std::uint64_t acknowledged() const { return acknowledged_; }
   std::uint64_t last_version() const { return last_version_; }
-  // The version the next delta is based on (0: the next update is a keyframe).
-  std::uint64_t next_base() const { return keyframe_requested_ ? 0 : base_version_; }
   // Repair requests answered, and those ignored as answered already.
   std::uint64_t repairs() const { return repairs_; }
   std::uint64_t repeated_requests() const { return repeated_requests_; }

@@ -16,6 +16,7 @@
 // A file of another version, another fingerprint or grid, a bad checksum, or sections that do not
 // fit is refused with LutFileError naming the file and what was wrong; nothing is guessed.
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -31,6 +32,12 @@ namespace safecell {
 
 // 5: LUT-2 per robot part.
 inline constexpr std::uint32_t kLutFileVersion = 5;
+
+// Where the header keeps the file's size (64-bit) and its CRC-32, in bytes from the start: a
+// tool that writes a file by hand (the fuzz target's sealing mode) fills these.
+inline constexpr std::size_t kLutHeaderBytes = 80;
+inline constexpr std::size_t kLutFileBytesOffset = 64;
+inline constexpr std::size_t kLutChecksumOffset = 72;
 
 class LutFileError : public InputError {
  public:
