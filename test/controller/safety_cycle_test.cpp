@@ -209,14 +209,35 @@ Words blocked_ahead(const CspaceGrid& grid, SimulatedRobot& robot, const Words& 
 
 class SafetyCycleCamerasTest : public SafetyCycleTest {
  protected:
-  SafetyCycleCamerasTest() : SafetyCycleTest(5) {}  // the scripted maps say 4 healthy cameras
+  // The scripted cell's 4 cameras must all be healthy.
+  SafetyCycleCamerasTest() : SafetyCycleTest(test::ScriptedCoprocessor::kCameras) {}
 };
 
 TEST_F(SafetyCycleCamerasTest, TooFewHealthyCamerasStopLatched) {
   open_session();
-  const CycleReport report = run_with_maps(16, free_);
+  ASSERT_EQ(run_with_maps(16, free_).state, CycleState::kMoving);  // the control: 4 of 4
+  coprocessor_.set_healthy_cameras(3);
+  const CycleReport report = run_with_maps(250, free_);  // 1 s: long enough to stand still
   EXPECT_EQ(report.state, CycleState::kFault);
   EXPECT_EQ(report.fault, CycleFault::kCameras);
+  EXPECT_EQ(report.healthy_cameras, 3U);
+  EXPECT_FALSE(robot_.moving());
+}
+
+class SafetyCycleMoreCamerasThanTheCellTest : public SafetyCycleTest {
+ protected:
+  SafetyCycleMoreCamerasThanTheCellTest()
+      : SafetyCycleTest(test::ScriptedCoprocessor::kCameras + 1) {}
+};
+
+// A controller file asking more healthy cameras than the cell has can never be met: it is named
+// as the configuration fault it is, not as cameras failing.
+TEST_F(SafetyCycleMoreCamerasThanTheCellTest, IsAConfigurationFaultNamingTheCount) {
+  open_session();
+  const CycleReport report = run_with_maps(16, free_);
+  EXPECT_EQ(report.state, CycleState::kFault);
+  EXPECT_EQ(report.fault, CycleFault::kCameraCount);
+  EXPECT_EQ(report.camera_count, 4U);
   EXPECT_FALSE(robot_.moving());
 }
 

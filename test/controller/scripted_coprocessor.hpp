@@ -43,6 +43,8 @@ class MemoryPort final : public LinkPort {
 // tests, which are small enough for an update in one frame.
 class ScriptedCoprocessor {
  public:
+  static constexpr std::uint32_t kCameras = safecell::ScriptedCoprocessor::kCameras;
+
   ScriptedCoprocessor(std::uint64_t grid_fingerprint, std::uint64_t lut_fingerprint,
                       std::uint64_t session, CellIndex cells)
       : sender_(grid_fingerprint, lut_fingerprint, session, cells) {}
@@ -72,6 +74,7 @@ class ScriptedCoprocessor {
   void set_speed_reduction_permille(std::uint32_t permille) {
     sender_.set_speed_reduction_permille(permille);
   }
+  void set_healthy_cameras(std::uint32_t healthy) { sender_.set_healthy_cameras(healthy); }
   Bytes seal_payload(const Bytes& payload, std::uint64_t capture, std::uint64_t now) {
     return sender_.seal_payload(payload.data(), payload.size(), now, capture);
   }

@@ -47,6 +47,8 @@ const char* to_string(CycleFault fault) noexcept {
       return "map hash mismatch";
     case CycleFault::kCameras:
       return "too few healthy cameras";
+    case CycleFault::kCameraCount:
+      return "min_healthy_cameras above the cell's camera count";
     case CycleFault::kWatchdog:
       return "watchdog";
     case CycleFault::kJoints:
@@ -90,6 +92,8 @@ const CycleReport& SafetyCycle::run(const double* planned_rad_s, bool command_ve
   if (fault != CycleFault::kNone && latched_ == CycleFault::kNone) latched_ = fault;
   report_.fault = latched_;
   report_.map_version = store_.version();
+  report_.healthy_cameras = link_.healthy_cameras();
+  report_.camera_count = link_.camera_count();
   const std::uint64_t capture = store_.capture_ns();
   report_.map_age_s =
       capture != 0 && now > capture ? static_cast<double>(now - capture) * 1e-9 : 0.0;
@@ -171,8 +175,10 @@ CycleFault SafetyCycle::detect_fault(const RobotJoints& joints, std::uint64_t no
     hash_mismatches_seen_ = link_.hash_mismatches();
     return CycleFault::kMapRefused;
   }
-  if (store_.version() != 0 && link_.healthy_cameras() < config_.min_healthy_cameras) {
-    return CycleFault::kCameras;
+  if (store_.version() != 0) {
+    // Checked first: a count the cell cannot reach is a configuration fault, not a camera one.
+    if (link_.camera_count() < config_.min_healthy_cameras) return CycleFault::kCameraCount;
+    if (link_.healthy_cameras() < config_.min_healthy_cameras) return CycleFault::kCameras;
   }
   return CycleFault::kNone;
 }

@@ -332,6 +332,10 @@ std::string status_line(const ModuleStatus& status) {
     if (cycle.fault == CycleFault::kLink) line << " (" << to_string(cycle.link_block) << ")";
     if (cycle.fault == CycleFault::kWatchdog)
       line << " (" << to_string(cycle.watchdog_fault) << ")";
+    if (cycle.fault == CycleFault::kCameraCount) {
+      line << " (the maps are fused from " << cycle.camera_count
+           << " cameras; safety.min_healthy_cameras must be 1.." << cycle.camera_count << ")";
+    }
   } else if (cycle.state == CycleState::kWaiting) {
     line << " | " << to_string(cycle.link_block);
   } else if (cycle.state == CycleState::kSlowed || cycle.state == CycleState::kStopped) {

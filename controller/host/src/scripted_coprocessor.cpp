@@ -7,11 +7,7 @@
 #include "safecell/protocol/nanopb_codec.hpp"
 
 namespace safecell {
-namespace {
-
-constexpr std::uint32_t kCameras = 4;  // the scripted cell's cameras, all of them healthy
-
-}  // namespace
+namespace {}  // namespace
 
 ScriptedCoprocessor::ScriptedCoprocessor(std::uint64_t grid_fingerprint,
                                          std::uint64_t lut_fingerprint, std::uint64_t opening,
@@ -74,11 +70,12 @@ std::vector<ScriptedCoprocessor::Frame> ScriptedCoprocessor::update(
     chunk.base_version = base != nullptr ? base_version : 0;
     chunk.map_hash =
         map_hash_with_speed_reduction(
-            map_hash_with_cameras(map_hash(target, cells_), kCameras, kCameras), speed_reduction_) ^
+            map_hash_with_cameras(map_hash(target, cells_), healthy_cameras_, kCameras),
+            speed_reduction_) ^
         (wrong_hash ? 1U : 0U);
     chunk.chunk_index = static_cast<std::uint32_t>(chunks.size());
     chunk.first_cell = from;
-    chunk.healthy_cameras = kCameras;
+    chunk.healthy_cameras = healthy_cameras_;
     chunk.camera_count = kCameras;
     chunk.speed_reduction_permille = speed_reduction_;
     std::size_t size = 0;

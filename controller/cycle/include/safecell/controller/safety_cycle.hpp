@@ -37,7 +37,7 @@ namespace safecell {
 
 struct SafetyCycleConfig {
   LookAheadConfig look_ahead;             // its control_cycle_s is the configured period
-  std::uint32_t min_healthy_cameras = 1;  // the fusion's camera threshold
+  std::uint32_t min_healthy_cameras = 1;  // the fusion's camera threshold; 1..the cell's cameras
   StopCategory look_ahead_stop = StopCategory::kCategory2;
   StopCategory fault_stop = StopCategory::kCategory1;
   // The closed-loop validation's negative control, never a product setting: the look-ahead is
@@ -54,8 +54,11 @@ enum class CycleFault : std::uint8_t {
   kLink,        // CycleReport::link_block says which
   kMapRefused,  // a whole update whose hash did not match
   kCameras,     // fewer healthy cameras than the threshold
-  kWatchdog,    // CycleReport::watchdog_fault says which
-  kJoints,      // the robot's joints could not be read
+  // The cell has fewer cameras than min_healthy_cameras: the configuration can never be met (the
+  // controller file was not written for this cell).
+  kCameraCount,
+  kWatchdog,  // CycleReport::watchdog_fault says which
+  kJoints,    // the robot's joints could not be read
 };
 
 const char* to_string(CycleState state) noexcept;
@@ -75,6 +78,9 @@ struct CycleReport {
   LookAheadResult look_ahead;
   std::uint64_t map_version = 0;
   double map_age_s = 0.0;
+  // The held map's healthy cameras and the cell's camera count (0 without a map).
+  std::uint32_t healthy_cameras = 0;
+  std::uint32_t camera_count = 0;
   std::uint64_t start_ns = 0;
   double period_s = 0.0;  // measured from the last cycle's start
   RobotJoints joints;

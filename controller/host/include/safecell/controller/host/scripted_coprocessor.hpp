@@ -45,6 +45,10 @@ class ScriptedCoprocessor {
   // The speed reduction (MapChunk.speed_reduction_permille) the updates from now on carry, bound
   // into their hash as the coprocessor binds it. 0 (none) at the start.
   void set_speed_reduction_permille(std::uint32_t permille) { speed_reduction_ = permille; }
+  // How many of the cell's kCameras the updates from now on say are healthy (all at the start).
+  void set_healthy_cameras(std::uint32_t healthy) { healthy_cameras_ = healthy; }
+
+  static constexpr std::uint32_t kCameras = 4;  // the scripted cell's cameras
 
   // A payload of the caller's own making (a hostile or future sender's message), sealed as the
   // next data frame.
@@ -63,6 +67,7 @@ class ScriptedCoprocessor {
   std::uint64_t opening_;
   CellIndex cells_;
   std::uint32_t speed_reduction_ = 0;
+  std::uint32_t healthy_cameras_ = kCameras;
   FrameSealer sealer_;
   safecell_v1_Message message_{};
 };
