@@ -242,6 +242,22 @@ TEST(RosCameraInfoImport, WhatCannotBeUsedIsNamed) {
   EXPECT_NE(refused("image_width: 704", "image_width: [").find("not valid YAML"),
             std::string::npos);
   EXPECT_THROW((void)read_ros_camera_info(folder.path() / "none.yaml"), CameraError);
+  // A matrix that is a number (yaml-cpp threw its own exception past the reader: exit 70), a
+  // misspelt or repeated key, a file nested deeper than any camera_info: each named.
+  EXPECT_NE(refused("camera_matrix:\n  rows: 3\n  cols: 3\n  data: [458.7, 0, 351.5, 0, 459.1, "
+                    "287.25, 0, 0, 1]",
+                    "camera_matrix: 3")
+                .find("camera_matrix: expected a mapping"),
+            std::string::npos);
+  EXPECT_NE(refused("image_height", "image_hieght").find("image_hieght: unknown key"),
+            std::string::npos);
+  EXPECT_NE(refused("  rows: 1\n", "  rows: 1\n  rows: 1\n").find("given twice"),
+            std::string::npos);
+  EXPECT_NE(refused("  rows: 1\n", "  rowz: 1\n").find("unknown key 'rowz'"), std::string::npos);
+  EXPECT_NE(
+      refused("camera_name: cam0", "camera_name: " + std::string(40, '[') + std::string(40, ']'))
+          .find("nested deeper than 16"),
+      std::string::npos);
 }
 
 }  // namespace

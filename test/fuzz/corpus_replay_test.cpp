@@ -46,6 +46,7 @@ TEST(FuzzCorpus, Urdf) { replay("urdf", &fuzz::urdf); }
 TEST(FuzzCorpus, Calibration) { replay("calibration", &fuzz::calibration); }
 TEST(FuzzCorpus, ControllerConfig) { replay("controller_config", &fuzz::controller_config); }
 TEST(FuzzCorpus, LutFile) { replay("lut_file", &fuzz::lut_file); }
+TEST(FuzzCorpus, FrameTimes) { replay("frame_times", &fuzz::frame_times); }
 #endif
 
 }  // namespace

@@ -25,6 +25,8 @@ int calibration(const std::uint8_t* data, std::size_t size);
 int controller_config(const std::uint8_t* data, std::size_t size);
 // A LUT file (`luts info`'s summary and the service's load); mode byte 1 seals it (see the file).
 int lut_file(const std::uint8_t* data, std::size_t size);
+// An image folder's frame_times.csv (the folder opened as a replayed camera).
+int frame_times(const std::uint8_t* data, std::size_t size);
 
 }  // namespace safecell::fuzz
 

@@ -1,20 +1,39 @@
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include "camera_checks.hpp"
 #include "error_text.hpp"
 #include "safecell/camera/calibration_import.hpp"
 #include "safecell/camera/camera_error.hpp"
+#include "yaml_gate.hpp"
 
 namespace safecell {
 namespace {
+
+// What camera_calibration writes (the last two are read by no one here, see the header).
+constexpr const char* kKeys[] = {"image_width",          "image_height",
+                                 "camera_name",          "camera_matrix",
+                                 "distortion_model",     "distortion_coefficients",
+                                 "rectification_matrix", "projection_matrix"};
 
 class RosReader {
  public:
   RosReader(std::string source, const YAML::Node& root) : source_(std::move(source)), root_(root) {
     if (!root_.IsMap()) fail("(file)", "expected a mapping of camera_info keys");
+    // A misspelt key would otherwise be passed over (and its value taken from nowhere).
+    for (const auto& entry : root_) {
+      const std::string key = entry.first.Scalar();
+      if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
+        std::string expected;
+        for (const char* known : kKeys)
+          expected += (expected.empty() ? "" : ", ") + std::string(known);
+        fail(key, "unknown key, expected one of " + expected);
+      }
+    }
   }
 
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
@@ -46,11 +65,17 @@ class RosReader {
   // {rows, cols, data}: the data, a list of finite numbers whose count is one of `counts` (rows and
   // cols, which ROS writes too, are not needed).
   std::vector<double> matrix(const char* key, const std::vector<std::size_t>& counts) const {
-    const YAML::Node node = require(key, "a mapping of rows, cols and data");
-    const YAML::Node data = node["data"];
-    if (!node.IsMap() || !data || !data.IsSequence()) {
-      fail(key, "expected a mapping of rows, cols and data (a list of numbers)");
+    const std::string expected = "a mapping of rows, cols and data (a list of numbers)";
+    const YAML::Node node = require(key, expected);
+    if (!node.IsMap()) fail(key, "expected " + expected);
+    for (const auto& entry : node) {
+      const std::string name = entry.first.Scalar();
+      if (name != "rows" && name != "cols" && name != "data") {
+        fail(key, "unknown key '" + name + "', expected rows, cols and data");
+      }
     }
+    const YAML::Node data = node["data"];
+    if (!data || !data.IsSequence()) fail(key, "expected " + expected);
     std::vector<double> values;
     for (std::size_t i = 0; i < data.size(); ++i) {
       double value = 0.0;
@@ -61,13 +86,14 @@ class RosReader {
       values.push_back(value);
     }
     bool allowed = false;
-    std::string expected;
+    std::string counts_text;
     for (const std::size_t count : counts) {
       allowed = allowed || values.size() == count;
-      expected += (expected.empty() ? "" : " or ") + std::to_string(count);
+      counts_text += (counts_text.empty() ? "" : " or ") + std::to_string(count);
     }
     if (!allowed) {
-      fail(key, "data holds " + std::to_string(values.size()) + " numbers, expected " + expected);
+      fail(key,
+           "data holds " + std::to_string(values.size()) + " numbers, expected " + counts_text);
     }
     return values;
   }
@@ -81,19 +107,9 @@ class RosReader {
 
 CameraIntrinsics read_ros_camera_info(const std::filesystem::path& path) {
   const std::string source = path.string();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw_camera_error(source, "(file)", "does not exist, expected a ROS camera_info YAML file");
-  }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(source);
-  } catch (const YAML::Exception& parse_error) {
-    throw_camera_error(source, "(file)",
-                       "not valid YAML (" + one_line(parse_error.what()) +
-                           "), expected a ROS camera_info YAML file");
-  }
-  const RosReader reader(source, root);
+  const std::string expected = "a ROS camera_info YAML file";
+  const RosReader reader(source,
+                         checked_yaml_tree(source, yaml_file_text(path, expected), expected));
   CameraIntrinsics intrinsics;
   intrinsics.width_px = reader.image_size("image_width");
   intrinsics.height_px = reader.image_size("image_height");
