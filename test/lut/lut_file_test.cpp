@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "model_fixture.hpp"
 #include "safecell/base/crc32.hpp"
@@ -16,6 +17,7 @@
 #include "safecell/lut_build/cell_table_builder.hpp"
 #include "safecell/lut_build/model_luts.hpp"
 #include "safecell/lut_files/lut_cache.hpp"
+#include "safecell/silhouettes/model_silhouettes.hpp"
 
 namespace safecell {
 namespace {
@@ -277,6 +279,44 @@ TEST_F(LutFile, ABuildBeyondTheMachinesMemoryIsRefusedBeforeItStarts) {
     EXPECT_NE(std::string(error.what()).find("GB while they are built"), std::string::npos)
         << error.what();
   }
+}
+
+// A build is announced with its estimate before it starts, drawn from the build's own work; a
+// load from the cache is not. (The estimate's seconds are a measurement on this machine: compared
+// with the build's in the commit that made it, not here.)
+TEST_F(LutFile, ABuildIsAnnouncedWithItsEstimateALoadIsNot) {
+  std::vector<LutBuildEstimate> announced;
+  bool built_before_announced = false;
+  const auto announce = [&](const LutBuildEstimate& estimate) {
+    built_before_announced = fs::exists(
+        lut_cache_file(folder_, model_lut_fingerprint(*cell_, *grid_, ModelLutOptions{})));
+    announced.push_back(estimate);
+  };
+  const CachedLuts built =
+      model_luts_cached(*cell_, *grid_, ModelLutOptions{}, folder_, {}, announce);
+  ASSERT_TRUE(built.built);
+  ASSERT_EQ(announced.size(), 1U);
+  EXPECT_FALSE(built_before_announced);
+  const LutBuildEstimate& estimate = announced.front();
+  EXPECT_EQ(estimate.cells, grid_->cell_count());
+  EXPECT_DOUBLE_EQ(estimate.peak_bytes, lut_build_peak_bytes(*grid_));
+  // The cells the build draws: per part, those of its last body's joints.
+  const ModelSilhouettes silhouettes(*cell_, *grid_, ModelLutOptions{});
+  std::uint64_t drawn = 0;
+  for (const RobotPart& part : silhouettes.parts()) {
+    drawn += silhouettes.envelope().prefix_count(part.end_body - 1);
+  }
+  EXPECT_EQ(estimate.drawn_cells, drawn);
+  EXPECT_GT(estimate.sampled_cells, 0U);
+  EXPECT_LE(estimate.sampled_cells, drawn);
+  EXPECT_GT(estimate.seconds, 0.0);
+  EXPECT_GE(estimate.threads, 1U);
+  EXPECT_EQ(built.estimate.drawn_cells, estimate.drawn_cells);
+
+  const CachedLuts loaded =
+      model_luts_cached(*cell_, *grid_, ModelLutOptions{}, folder_, {}, announce);
+  EXPECT_FALSE(loaded.built);
+  EXPECT_EQ(announced.size(), 1U) << "a load from the cache was announced as a build";
 }
 
 TEST_F(LutFile, CacheBuildsOnceThenLoadsAndReplacesADamagedFile) {

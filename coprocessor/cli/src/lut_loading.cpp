@@ -4,6 +4,7 @@
 
 #include "progress_bar.hpp"
 #include "safecell/cell/entry_zones.hpp"
+#include "safecell/cli/text_table.hpp"
 #include "safecell/pipeline/cell_fusion_settings.hpp"
 #include "safecell/validation/floor_coverage.hpp"
 
@@ -48,6 +49,18 @@ CellModel tables_cell(const CellModel& cell, const CspaceGrid& grid, std::ostrea
   return tables;
 }
 
+std::string build_estimate_line(const LutBuildEstimate& estimate, std::size_t cameras) {
+  const double minutes = estimate.seconds / 60.0;
+  const std::string time = estimate.seconds < 120.0 ? fixed(estimate.seconds, 0) + " s"
+                           : minutes < 120.0        ? fixed(minutes, 1) + " min"
+                                                    : fixed(minutes / 60.0, 1) + " h";
+  return "building the tables of " + grouped(estimate.cells) + " C-space cells (" +
+         std::to_string(cameras) + " cameras): about " + fixed(estimate.peak_bytes / 1e6, 0) +
+         " MB at the peak, about " + time + " on " + std::to_string(estimate.threads) +
+         " threads (timed on " + grouped(estimate.sampled_cells) + " of the " +
+         grouped(estimate.drawn_cells) + " cells the build draws)";
+}
+
 CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,
                      const std::string& cache_folder, std::ostream& err) {
   const CellModel tables = tables_cell(cell, grid, err);
@@ -55,7 +68,10 @@ CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelL
   CachedLuts luts = model_luts_cached(
       tables, grid, options,
       cache_folder.empty() ? default_lut_cache_folder() : std::filesystem::path(cache_folder),
-      [&bar](int stage, double fraction) { bar.update(kStages[stage], fraction); });
+      [&bar](int stage, double fraction) { bar.update(kStages[stage], fraction); },
+      [&err, &tables](const LutBuildEstimate& estimate) {
+        err << build_estimate_line(estimate, tables.cameras.size()) << '\n';
+      });
   bar.finish();
   if (!luts.note.empty()) err << luts.note << '\n';
   if (luts.built)

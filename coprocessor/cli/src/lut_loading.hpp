@@ -20,6 +20,11 @@ inline constexpr double kBlindSpotStep_m = 0.2;
 // (vote_warning), is a warning on `err`.
 CellModel tables_cell(const CellModel& cell, const CspaceGrid& grid, std::ostream& err);
 
+// One line said before a table build: "building the tables of 186,480 C-space cells (4 cameras):
+// about 84 MB at the peak, about 1.6 min on 2 threads (timed on 320 of the 1,380,000 cells the
+// build draws)".
+std::string build_estimate_line(const LutBuildEstimate& estimate, std::size_t cameras);
+
 // cache_folder: empty for the default. Messages (build, rebuild reason, blind spots) go to
 // `err`. The tables are those of tables_cell(cell).
 CachedLuts cell_luts(const CellModel& cell, const CspaceGrid& grid, const ModelLutOptions& options,

@@ -214,19 +214,30 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
   // to the stage it reports on. The stages take turns, one robot part at a time.
   std::array<double, kLutBuildStages> stage_s{};
   auto last_report = std::chrono::steady_clock::now();
-  const CachedLuts luts =
-      model_luts_cached(cell, grid, lut_options, folder, [&](int stage, double fraction) {
+  const CachedLuts luts = model_luts_cached(
+      cell, grid, lut_options, folder,
+      [&](int stage, double fraction) {
         const auto now = std::chrono::steady_clock::now();
         stage_s.at(static_cast<std::size_t>(stage)) +=
             std::chrono::duration<double>(now - last_report).count();
         last_report = now;
         bar.update(kStageNames[stage], fraction);
+      },
+      [&err, &cell](const LutBuildEstimate& estimate) {
+        err << build_estimate_line(estimate, cell.cameras.size()) << '\n';
       });
   bar.finish();
   if (!luts.note.empty()) err << luts.note << '\n';
   nlohmann::ordered_json report = summary_json(luts.file, read_lut_file_summary(luts.file));
   report["built"] = luts.built;
   report["build_s"] = luts.build_s;
+  if (luts.built) {
+    report["estimate"] = {{"seconds", luts.estimate.seconds},
+                          {"peak_bytes", luts.estimate.peak_bytes},
+                          {"threads", luts.estimate.threads},
+                          {"drawn_cells", luts.estimate.drawn_cells},
+                          {"sampled_cells", luts.estimate.sampled_cells}};
+  }
   if (luts.built) {
     for (int stage = 0; stage < kLutBuildStages; ++stage) {
       report["stage_s"][kStageKeys[stage]] = stage_s.at(static_cast<std::size_t>(stage));

@@ -15,24 +15,21 @@
 namespace safecell {
 namespace {
 
-// A table build's peak memory per C-space cell: 7.1 GB for the 6 cm grid's 16.5 M cells
-// (docs/validation.md), rounded up. A build that needs more than most of the machine's memory is
-// refused before it starts (a cell of m_max_m 0.01 ended in std::bad_alloc, exit 70).
-constexpr double kBuildBytesPerCell = 450.0;
+// A build that needs more than most of the machine's memory is refused before it starts (a cell
+// of m_max_m 0.01 ended in std::bad_alloc, exit 70).
 constexpr double kUsableMemoryShare = 0.8;
 
-void check_build_fits_the_machine(const CspaceGrid& grid) {
+void check_build_fits_the_machine(const LutBuildEstimate& estimate) {
   const long pages = ::sysconf(_SC_PHYS_PAGES);
   const long page_bytes = ::sysconf(_SC_PAGESIZE);
   if (pages <= 0 || page_bytes <= 0) return;  // unknown: the build will tell
   const double have = static_cast<double>(pages) * static_cast<double>(page_bytes);
-  const double need = kBuildBytesPerCell * static_cast<double>(grid.cell_count());
-  if (need <= kUsableMemoryShare * have) return;
+  if (estimate.peak_bytes <= kUsableMemoryShare * have) return;
   std::ostringstream message;
   message.precision(3);
-  message << "the tables of this cell's " << grid.cell_count() << " C-space cells need about "
-          << need / 1e9 << " GB while they are built (" << kBuildBytesPerCell
-          << " bytes a cell), this machine has " << have / 1e9
+  message << "the tables of this cell's " << estimate.cells << " C-space cells need about "
+          << estimate.peak_bytes / 1e9 << " GB while they are built, this machine has "
+          << have / 1e9
           << " GB; raise m_max_m or discretise fewer joints (safecell cell info shows the cells)";
   throw InputError(message.str());
 }
@@ -81,7 +78,7 @@ std::filesystem::path lut_cache_file(const std::filesystem::path& folder,
 
 CachedLuts model_luts_cached(const CellModel& cell, const CspaceGrid& grid,
                              const ModelLutOptions& options, const std::filesystem::path& folder,
-                             const StagedProgress& progress) {
+                             const StagedProgress& progress, const BuildAnnouncement& announce) {
   const std::uint64_t fingerprint = model_lut_fingerprint(cell, grid, options);
   CachedLuts result;
   result.file = lut_cache_file(folder, fingerprint);
@@ -95,7 +92,14 @@ CachedLuts model_luts_cached(const CellModel& cell, const CspaceGrid& grid,
       result.note = std::string("rebuilt: ") + refused.what();
     }
   }
-  check_build_fits_the_machine(grid);
+  // The memory first: a grid too large for the machine is refused before its sample is drawn.
+  LutBuildEstimate estimate;
+  estimate.cells = grid.cell_count();
+  estimate.peak_bytes = lut_build_peak_bytes(grid);
+  check_build_fits_the_machine(estimate);
+  estimate = estimate_model_lut_build(cell, grid, options);
+  result.estimate = estimate;
+  if (announce) announce(estimate);
   std::filesystem::create_directories(folder, error);
   if (error) throw FileError(folder, "cannot create the LUT cache folder: " + error.message());
   const auto start = std::chrono::steady_clock::now();

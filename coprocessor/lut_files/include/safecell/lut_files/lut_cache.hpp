@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <string>
 
+#include <functional>
+
+#include "safecell/lut_build/lut_build_estimate.hpp"
 #include "safecell/lut_build/model_luts.hpp"
 
 namespace safecell {
@@ -20,17 +23,24 @@ namespace safecell {
 struct CachedLuts {
   LutSet set;
   std::filesystem::path file;
-  bool built = false;    // false: loaded from the cache
-  double build_s = 0.0;  // when built
-  std::string note;      // why a cached file was not used, if one was refused
+  bool built = false;         // false: loaded from the cache
+  double build_s = 0.0;       // when built
+  std::string note;           // why a cached file was not used, if one was refused
+  LutBuildEstimate estimate;  // when built: what was said before
 };
+
+// Called with the estimate before a build starts (not when the tables are loaded).
+using BuildAnnouncement = std::function<void(const LutBuildEstimate&)>;
 
 // Loads `<folder>/<fingerprint>.sclut`, or builds the tables and stores them there. A cached file
 // that is refused (damaged, another version) is rebuilt and replaced; the note says why.
-// Throws FileError when the folder cannot be written.
+// Before a build, one whose estimated peak memory is beyond 80 % of the machine's is refused
+// (InputError naming the figures), and `announce` is told the estimate. Throws FileError when the
+// folder cannot be written.
 [[nodiscard]] CachedLuts model_luts_cached(const CellModel& cell, const CspaceGrid& grid,
                                            const ModelLutOptions& options,
                                            const std::filesystem::path& folder,
-                                           const StagedProgress& progress = {});
+                                           const StagedProgress& progress = {},
+                                           const BuildAnnouncement& announce = {});
 
 }  // namespace safecell
