@@ -223,8 +223,9 @@ int run_luts_build(const LutsBuildOptions& options, std::ostream& out, std::ostr
         last_report = now;
         bar.update(kStageNames[stage], fraction);
       },
-      [&err, &cell](const LutBuildEstimate& estimate) {
+      [&err, &cell, &last_report](const LutBuildEstimate& estimate) {
         err << build_estimate_line(estimate, cell.cameras.size()) << '\n';
+        last_report = std::chrono::steady_clock::now();  // the build's clock starts now
       });
   bar.finish();
   if (!luts.note.empty()) err << luts.note << '\n';

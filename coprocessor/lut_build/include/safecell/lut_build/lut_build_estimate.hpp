@@ -24,7 +24,8 @@ struct LutBuildEstimate {
 // The peak memory alone (no sample drawn): for a refusal before anything is built.
 [[nodiscard]] double lut_build_peak_bytes(const CspaceGrid& grid);
 
-// Draws 64 cells' silhouettes of each robot part on this thread (0.3 s on the default cell). Throws
+// Makes the silhouettes' source as the build does and draws 64 cells' silhouettes of each robot
+// part on this thread (0.4 s on the default cell). Throws
 // std::invalid_argument as ModelSilhouettes does.
 [[nodiscard]] LutBuildEstimate estimate_model_lut_build(const CellModel& cell,
                                                         const CspaceGrid& grid,
