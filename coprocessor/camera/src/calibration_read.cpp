@@ -1,10 +1,6 @@
 #include <Eigen/Geometry>
 #include <cmath>
-#include <fstream>
 #include <initializer_list>
-#include <opencv2/calib3d.hpp>
-#include <opencv2/core.hpp>
-#include <sstream>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -59,34 +55,21 @@ PinholeCamera read_camera(const CalibrationReader& reader, const std::string& so
 
 PinholeCamera read_camera_calibration(const std::filesystem::path& path, std::string name) {
   const std::string source = path.string();
-  const std::string expected = "an OpenCV YAML calibration";
-  const std::string yaml = opencv_yaml_text(path, expected);
-  try {
-    const cv::FileStorage storage = open_opencv_yaml(source, yaml, expected);
-    return read_camera(CalibrationReader(source, storage.root()), source, std::move(name));
-  } catch (const cv::Exception& error) {
-    throw_camera_error(source, "(file)",
-                       "not valid YAML (" + one_line(error.what()) + "), expected " + expected);
-  }
+  const CalibrationReader reader(source, opencv_yaml_tree(path, "an OpenCV YAML calibration"));
+  return read_camera(reader, source, std::move(name));
 }
 
 Eigen::Isometry3d read_cell_pose(const std::filesystem::path& path) {
   const std::string source = path.string();
   const std::string expected = "an OpenCV YAML pose (cell_to_camera_rvec or _rotation, and " +
                                std::string(kTranslationKey) + ")";
-  const std::string yaml = opencv_yaml_text(path, expected);
-  try {
-    const cv::FileStorage storage = open_opencv_yaml(source, yaml, expected);
-    // Intrinsics that pass the checks: only the pose's own values are checked here.
-    CameraIntrinsics any_lens;
-    any_lens.fx_px = any_lens.fy_px = 100.0;
-    any_lens.cx_px = any_lens.cy_px = 50.0;
-    any_lens.width_px = any_lens.height_px = 100;
-    return cell_pose_of(CalibrationReader(source, storage.root()), source, any_lens, {});
-  } catch (const cv::Exception& error) {
-    throw_camera_error(source, "(file)",
-                       "not valid YAML (" + one_line(error.what()) + "), expected " + expected);
-  }
+  const CalibrationReader reader(source, opencv_yaml_tree(path, expected));
+  // Intrinsics that pass the checks: only the pose's own values are checked here.
+  CameraIntrinsics any_lens;
+  any_lens.fx_px = any_lens.fy_px = 100.0;
+  any_lens.cx_px = any_lens.cy_px = 50.0;
+  any_lens.width_px = any_lens.height_px = 100;
+  return cell_pose_of(reader, source, any_lens, {});
 }
 
 }  // namespace safecell

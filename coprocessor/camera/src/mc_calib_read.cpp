@@ -20,9 +20,9 @@ McCalibCamera read_camera(const CalibrationReader& reader, const std::string& so
   intrinsics.width_px = reader.image_size("img_width");
   intrinsics.height_px = reader.image_size("img_height");
   read_camera_matrix(reader, intrinsics);
-  const cv::FileNode type = reader.require("distortion_type", "0 (Brown: k1 k2 p1 p2 k3)");
-  if (!type.isInt() || static_cast<int>(type) != 0) {
-    reader.fail("distortion_type", shown(type) +
+  const YAML::Node type = reader.require("distortion_type", "0 (Brown: k1 k2 p1 p2 k3)");
+  if (whole_number_of(type) != 0) {
+    reader.fail("distortion_type", value_shown(type) +
                                        ", expected 0 (Brown: k1 k2 p1 p2 k3); a fisheye camera (1, "
                                        "Kannala-Brandt) is not supported");
   }
@@ -86,30 +86,25 @@ std::vector<McCalibCamera> read_mc_calib_cameras(const std::filesystem::path& pa
     throw_camera_error(source, "(units)",
                        number_text(units_m) + " m per unit, expected a scale in (0, 1000]");
   }
-  const std::string yaml = opencv_yaml_text(path, kExpected);
-  try {
-    const cv::FileStorage storage = open_opencv_yaml(source, yaml, kExpected);
-    const CalibrationReader root(source, storage.root());
-    const cv::FileNode count = root.require("nb_camera", "the number of cameras");
-    if (!count.isInt() || static_cast<int>(count) < 1 || static_cast<int>(count) > kMaxCameras) {
-      root.fail("nb_camera", shown(count) + ", expected 1.." + std::to_string(kMaxCameras));
-    }
-    std::vector<McCalibCamera> cameras;
-    for (int index = 0; index < static_cast<int>(count); ++index) {
-      const std::string key = "camera_" + std::to_string(index);
-      std::string expected = "camera " + std::to_string(index);
-      expected += " of nb_camera " + std::to_string(static_cast<int>(count));
-      const cv::FileNode node = root.require(key.c_str(), expected);
-      std::string where = source;
-      where += ": " + key;
-      cameras.push_back(read_camera(CalibrationReader(where, node), source, index, units_m));
-    }
-    check_reference_camera(source, cameras);
-    return cameras;
-  } catch (const cv::Exception& error) {
-    throw_camera_error(source, "(file)",
-                       "not valid YAML (" + one_line(error.what()) + "), expected " + kExpected);
+  const CalibrationReader root(source, opencv_yaml_tree(path, kExpected));
+  const YAML::Node count_node = root.require("nb_camera", "the number of cameras");
+  const auto count = whole_number_of(count_node);
+  if (!count || *count < 1 || *count > kMaxCameras) {
+    root.fail("nb_camera",
+              value_shown(count_node) + ", expected 1.." + std::to_string(kMaxCameras));
   }
+  std::vector<McCalibCamera> cameras;
+  for (int index = 0; index < static_cast<int>(*count); ++index) {
+    const std::string key = "camera_" + std::to_string(index);
+    std::string expected = "camera " + std::to_string(index);
+    expected += " of nb_camera " + std::to_string(*count);
+    const YAML::Node node = root.require(key.c_str(), expected);
+    std::string where = source;
+    where += ": " + key;
+    cameras.push_back(read_camera(CalibrationReader(where, node), source, index, units_m));
+  }
+  check_reference_camera(source, cameras);
+  return cameras;
 }
 
 PinholeCamera mc_calib_camera_in_cell(const McCalibCamera& camera,

@@ -1,7 +1,9 @@
 #include "opencv_yaml_reader.hpp"
 
 #include <cmath>
+#include <limits>
 #include <opencv2/calib3d.hpp>
+#include <string_view>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -12,37 +14,160 @@
 
 namespace safecell {
 
-std::string shown(const cv::FileNode& node) {
-  if (node.isInt()) return std::to_string(static_cast<int>(node));
-  if (node.isReal()) return number_text(node.real());
-  if (node.isString()) return "'" + node.string() + "'";
-  if (node.isSeq()) return "a list of " + std::to_string(node.size()) + " entries";
-  if (node.isMap()) return "a mapping";
-  return "nothing";
+std::optional<long long> whole_number_of(const YAML::Node& node) {
+  long long value = 0;
+  if (!node || !node.IsScalar() || node.Tag() != "?" ||
+      !YAML::convert<long long>::decode(node, value)) {
+    return std::nullopt;
+  }
+  return value;
 }
 
-std::string opencv_yaml_text(const std::filesystem::path& path, const std::string& expected) {
+std::optional<double> number_of(const YAML::Node& node) {
+  double value = 0.0;
+  if (!node || !node.IsScalar() || node.Tag() != "?" ||
+      !YAML::convert<double>::decode(node, value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::string value_shown(const YAML::Node& node) {
+  if (!node || node.IsNull()) return "nothing";
+  if (node.IsSequence()) return "a list of " + std::to_string(node.size()) + " entries";
+  if (node.IsMap()) return "a mapping";
+  if (const auto whole = whole_number_of(node)) return std::to_string(*whole);
+  if (const auto number = number_of(node)) return number_text(*number);
+  return "'" + node.Scalar() + "'";
+}
+
+namespace {
+
+// OpenCV writes one document: the "%YAML:1.0" header, a "---" line, the keys. yaml-cpp reads only
+// the first document of a file, so a second one (or a directive past the header) would be
+// dropped without a word: it is refused instead.
+void refuse_further_documents(const std::string& source, const std::string& text) {
+  std::size_t line_start = text.find('\n');
+  for (int line = 2; line_start != std::string::npos; ++line) {
+    const std::size_t begin = line_start + 1;
+    line_start = text.find('\n', begin);
+    const std::string_view content = std::string_view(text).substr(
+        begin, line_start == std::string::npos ? std::string::npos : line_start - begin);
+    const bool document_start = line == 2 &&
+                                content.find_first_not_of(" \t\r", 3) == std::string_view::npos &&
+                                content.rfind("---", 0) == 0;
+    if (document_start) continue;
+    if (content.rfind('%', 0) == 0 || content.rfind("---", 0) == 0 ||
+        content.rfind("...", 0) == 0) {
+      throw_camera_error(source, "(file)",
+                         "a YAML directive or document marker on line " + std::to_string(line) +
+                             " ('" + std::string(content.substr(0, 20)) +
+                             "'), expected one document: \"%YAML:1.0\", \"---\", then the keys");
+    }
+  }
+}
+
+}  // namespace
+
+YAML::Node opencv_yaml_tree(const std::filesystem::path& path, const std::string& expected) {
   const std::string source = path.string();
-  std::string text = yaml_file_text(path, expected);
+  const std::string text = yaml_file_text(path, expected);
   if (text.rfind("%YAML", 0) != 0) {
     throw_camera_error(source, "(file)", "does not begin with \"%YAML:1.0\", expected " + expected);
   }
-  static_cast<void>(checked_yaml_tree(source, text, expected));
-  return text;
+  refuse_further_documents(source, text);
+  return checked_yaml_tree(source, text, expected);
 }
 
-cv::FileStorage open_opencv_yaml(const std::string& source, const std::string& yaml,
-                                 const std::string& expected) {
-  try {
-    cv::FileStorage storage(
-        yaml, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
-    if (storage.isOpened()) return storage;
-  } catch (const std::exception& error) {
-    throw_camera_error(
-        source, "(file)",
-        "not valid YAML (OpenCV: " + one_line(error.what()) + "), expected " + expected);
+CalibrationReader::CalibrationReader(std::string source, const YAML::Node& root)
+    : source_(std::move(source)), root_(root) {
+  if (!root_.IsMap()) {
+    fail("(file)", "expected a mapping of calibration keys, got " + value_shown(root_));
   }
-  throw_camera_error(source, "(file)", "cannot be parsed, expected " + expected);
+}
+
+bool CalibrationReader::has(const char* key) const {
+  const YAML::Node node = root_[key];
+  return node && !node.IsNull();
+}
+
+void CalibrationReader::refuse_unknown_keys(std::initializer_list<const char*> known) const {
+  for (const auto& entry : root_) {
+    const std::string key = entry.first.Scalar();
+    bool found = false;
+    std::string expected;
+    for (const char* name : known) {
+      found = found || key == name;
+      expected += (expected.empty() ? "" : ", ") + std::string(name);
+    }
+    if (!found) fail(key, "unknown key, expected one of " + expected);
+  }
+}
+
+YAML::Node CalibrationReader::require(const char* key, const std::string& expected) const {
+  if (!has(key)) fail(key, "missing, expected " + expected);
+  return root_[key];
+}
+
+int CalibrationReader::image_size(const char* key) const {
+  const std::string expected = "a whole number of pixels > 0";
+  const YAML::Node node = require(key, expected);
+  const auto value = whole_number_of(node);
+  if (!value || *value <= 0 || *value > std::numeric_limits<int>::max()) {
+    fail(key, value_shown(node) + ", expected " + expected);
+  }
+  return static_cast<int>(*value);
+}
+
+Matrix CalibrationReader::matrix(const char* key,
+                                 std::initializer_list<std::pair<int, int>> shapes) const {
+  std::string expected;
+  for (const auto& [rows, cols] : shapes) {
+    expected +=
+        (expected.empty() ? "a " : " or ") + std::to_string(rows) + "x" + std::to_string(cols);
+  }
+  expected += " opencv-matrix (rows, cols, dt, data)";
+  Matrix m = matrix_of(key, require(key, expected), expected);
+  bool allowed = false;
+  for (const auto& [rows, cols] : shapes) allowed = allowed || (m.rows == rows && m.cols == cols);
+  if (!allowed) fail(key, "a " + m.shape() + " matrix, expected " + expected);
+  return m;
+}
+
+int CalibrationReader::side(const char* key, const YAML::Node& node, const char* name) const {
+  const YAML::Node value = node[name];
+  const auto whole = whole_number_of(value);
+  if (!whole || *whole <= 0 || *whole > kMaxMatrixSide) {
+    fail(key, std::string(name) + " is " + value_shown(value) + ", expected a whole number in 1.." +
+                  std::to_string(kMaxMatrixSide));
+  }
+  return static_cast<int>(*whole);
+}
+
+Matrix CalibrationReader::matrix_of(const char* key, const YAML::Node& node,
+                                    const std::string& expected) const {
+  if (!node.IsMap()) fail(key, value_shown(node) + ", expected " + expected);
+  Matrix m;
+  m.rows = side(key, node, "rows");
+  m.cols = side(key, node, "cols");
+  const YAML::Node data = node["data"];
+  const auto count = static_cast<std::size_t>(m.rows) * static_cast<std::size_t>(m.cols);
+  if (!data || !data.IsSequence() || data.size() != count) {
+    fail(key, "data is " + value_shown(data) + ", expected a list of " + std::to_string(count) +
+                  " numbers for a " + m.shape() + " matrix");
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const YAML::Node entry = data[i];
+    const std::string at = "entry (" + std::to_string(i / static_cast<std::size_t>(m.cols)) + ", " +
+                           std::to_string(i % static_cast<std::size_t>(m.cols)) + ")";
+    const auto value = number_of(entry);
+    if (!value) fail(key, at + " is " + value_shown(entry) + ", expected a number");
+    if (!std::isfinite(*value)) {
+      fail(key, at + " is " + number_text(*value) + ", expected a finite number");
+    }
+    m.values.push_back(*value);
+  }
+  return m;
 }
 
 void read_camera_matrix(const CalibrationReader& reader, CameraIntrinsics& intrinsics) {
