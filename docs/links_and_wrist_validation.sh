@@ -11,7 +11,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/validation_run.sh"
 validation_setup docs/validation/links-and-wrist safecell-links-and-wrist
 
 run build luts build --out "$cache" --force
-run bench-cell bench --cell coprocessor/cell/default_cell.yaml --baseline-cell "$base_cell" \
+run bench-cell bench --cell coprocessor/model/cell/default_cell.yaml --baseline-cell "$base_cell" \
   --lut-cache "$cache" --frames 300
 for i in 1 2 3; do
   start=$SECONDS

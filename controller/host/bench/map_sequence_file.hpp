@@ -1,7 +1,7 @@
 #pragma once
 // A sequence of forbidden maps with their grid, as `safecell bench` hands the demo's maps to the
 // controller's benchmark program (the two never link each other's code: the coprocessor writes
-// this format in coprocessor/bench/src/map_sequence_writer.cpp, this side reads it).
+// this format in coprocessor/verification/bench/src/map_sequence_writer.cpp, this side reads it).
 // Little-endian:
 //
 //   "SCMAPS1\0"                      8 bytes
