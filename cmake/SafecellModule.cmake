@@ -84,4 +84,9 @@ const char* const ${symbol} = R\"safecell_text(${embedded_text})safecell_text\";
   target_include_directories(safecell_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
   target_link_libraries(safecell_${name} PUBLIC ${ARG_PUBLIC} PRIVATE ${ARG_PRIVATE} safecell::warnings)
   safecell_check_headers_alone(safecell_${name} ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  # The stage of the data flow is the first folder under coprocessor/ (coprocessor/README.md):
+  # the dependency guard in coprocessor/CMakeLists.txt reads the libraries of each stage.
+  file(RELATIVE_PATH module_path ${PROJECT_SOURCE_DIR}/coprocessor ${CMAKE_CURRENT_SOURCE_DIR})
+  string(REGEX REPLACE "/.*" "" stage "${module_path}")
+  set_property(GLOBAL APPEND PROPERTY SAFECELL_STAGE_LIBRARIES_${stage} safecell_${name})
 endfunction()
