@@ -1,5 +1,6 @@
 #pragma once
-// Camera calibration files in OpenCV's YAML format (as cv::FileStorage writes), one camera per file:
+// Camera calibration files in OpenCV's YAML format (as cv::FileStorage writes it), one camera
+// per file:
 //
 //   %YAML:1.0
 //   ---
